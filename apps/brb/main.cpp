@@ -1,0 +1,50 @@
+// brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
+// not converge, output could not be written, ...), 2 invalid input or usage.
+#include "material_command.hpp"
+
+#include "brb/io/input_error.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+namespace {
+
+constexpr int kRunFailed = 1;
+constexpr int kInvalidInput = 2;
+
+} // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"brb: reduced-order analysis of buckling-restrained braces.\n"
+               "Units everywhere: N, mm, s, MPa, tonne.",
+               "brb"};
+  app.require_subcommand(1);
+
+  brb::cli::MaterialCommand material_command;
+  const CLI::App* material = brb::cli::add_material_command(app, material_command);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+      return app.exit(error); // --help
+    }
+    std::cerr << "brb: error: " << error.what() << "\n"
+              << "Run 'brb --help' or 'brb material --help' for usage.\n";
+    return kInvalidInput;
+  }
+
+  try {
+    if (material->parsed())
+      return brb::cli::run_material_command(material_command, std::cerr);
+  } catch (const brb::io::InputError& error) {
+    std::cerr << "brb: error: " << error.what() << "\n";
+    return kInvalidInput;
+  } catch (const std::exception& error) {
+    std::cerr << "brb: error: " << error.what() << "\n";
+    return kRunFailed;
+  }
+  return kInvalidInput;
+}

@@ -1,0 +1,146 @@
+// StaticAnalysis: path-following static solution of a Model under displacement control of
+// one DOF (the cyclic test of a brace) or load control (a reference load times a factor).
+//
+// Algorithm per step: tangent predictor, Newton-Raphson with a backtracking line search on
+// the residual; on failure the step is retried in halves down to a floor (1 / 2^max_halvings
+// of the step), and at the floor with a regularised Newton (tangent + shift, i.e.
+// Levenberg-Marquardt / pseudo-transient continuation). Every such fallback is reported.
+// Nothing is committed until a (sub)step converges, so a failure leaves the last
+// converged state intact.
+//
+// Energy: external work is integrated with the trapezoidal rule over converged steps;
+// elements report stored and dissipated energy, so the balance W = stored + dissipated is
+// a check of the whole solution (exact in the limit of small steps).
+#pragma once
+
+#include "brb/element/element.hpp"
+#include "brb/model/model.hpp"
+
+#include <Eigen/Sparse>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace brb::analysis {
+
+struct NewtonSettings {
+  int max_iterations = 30;
+  /// Converged when |residual|_inf <= tolerance * (largest element force component +
+  /// largest external load + 1 N).
+  double relative_force_tolerance = 1e-9;
+  bool line_search = true;
+  int max_halvings = 12;         ///< substep floor: step / 2^max_halvings
+  int fallback_iterations = 200; ///< regularised Newton at the floor
+};
+
+/// What one call of step_to() did.
+struct StepReport {
+  bool converged = false;
+  int iterations = 0;      ///< Newton iterations over all attempts
+  int substeps = 1;        ///< converged substeps taken
+  int deepest_halving = 0; ///< 0: the step went through whole
+  bool used_regularised_newton = false;
+  std::string failure; ///< why it stopped, when it did not converge
+};
+
+/// Totals over the analysis (N mm).
+struct EnergyBalance {
+  double external_work = 0.0;
+  double stored = 0.0;
+  double dissipated = 0.0;
+  /// |W - stored - dissipated| / max(|W|, tiny)
+  double relative_error() const;
+};
+
+class StaticAnalysis {
+public:
+  explicit StaticAnalysis(model::Model& model, NewtonSettings settings = {});
+
+  /// Control by the displacement of one DOF (it becomes prescribed).
+  void use_displacement_control(int node, model::Dof dof);
+  /// Control by a load factor times a reference load (N or N mm per DOF).
+  void use_load_control(const Eigen::VectorXd& reference_load);
+  /// A dead load applied in every state (e.g. gravity), in addition to the control.
+  void set_constant_load(const Eigen::VectorXd& load);
+
+  /// Moves the control (displacement or load factor) to `target` from its current value.
+  StepReport step_to(double target);
+
+  /// Current value of the control and the force conjugate to it (the reaction at the
+  /// controlled DOF in displacement control; the load factor's work-conjugate in load control).
+  double control_value() const { return control_value_; }
+  double control_force() const { return control_force_; }
+
+  const element::NodeConfiguration& node(int index) const { return committed_[index]; }
+  /// Displacement of a translational DOF, or the rotation-vector component of R for a rotation.
+  double displacement(int node, model::Dof dof) const;
+  /// Internal force at each DOF of the converged state (reactions at restrained DOF).
+  const Eigen::VectorXd& internal_force() const { return committed_internal_force_; }
+
+  const EnergyBalance& energy() const { return energy_; }
+  /// Statistics since construction.
+  int total_iterations() const { return total_iterations_; }
+  int total_substeps() const { return total_substeps_; }
+  int regularised_steps() const { return regularised_steps_; }
+
+  /// Solves the initial state (control at zero) so that reactions and energies exist.
+  StepReport initialise();
+
+  /// The tangent stiffness of the last converged state restricted to the free DOF, and
+  /// the DOF numbering (global DOF per free equation). For eigen-buckling analyses.
+  Eigen::SparseMatrix<double> free_tangent();
+  const std::vector<int>& free_dofs() const { return free_dofs_; }
+
+private:
+  struct Attempt {
+    bool converged = false;
+    int iterations = 0;
+    std::string failure;
+  };
+
+  void number_equations();
+  /// Assembles internal forces (all DOF) and the free-free tangent at the trial state.
+  bool assemble(bool with_tangent, std::string& failure);
+  Eigen::VectorXd free_residual(double control) const;
+  void apply_free_increment(const Eigen::VectorXd& increment, double scale);
+  void set_control_value(double value);
+  Attempt newton(double control, double regularisation, int max_iterations);
+  bool try_increment(double from, double to, int depth, StepReport& report);
+  void commit(double control);
+  void revert();
+
+  model::Model& model_;
+  NewtonSettings settings_;
+  std::optional<std::pair<int, model::Dof>> displacement_control_;
+  Eigen::VectorXd reference_load_;
+  Eigen::VectorXd constant_load_;
+
+  std::vector<int> equation_;  // global DOF -> free equation or -1
+  std::vector<int> free_dofs_; // free equation -> global DOF
+
+  std::vector<element::NodeConfiguration> committed_;
+  std::vector<element::NodeConfiguration> trial_;
+  Eigen::VectorXd internal_force_;
+  Eigen::VectorXd committed_internal_force_;
+  double force_scale_ = 0.0; // largest element force component of the last assembly
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> tangent_; // free x free
+  Eigen::VectorXd control_column_;      // d F_free / d control DOF
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
+  bool pattern_analysed_ = false;
+
+  double control_value_ = 0.0;
+  double control_force_ = 0.0;
+  EnergyBalance energy_;
+  int total_iterations_ = 0;
+  int total_substeps_ = 0;
+  int regularised_steps_ = 0;
+
+  // element buffers
+  std::vector<element::NodeConfiguration> element_nodes_;
+  Eigen::VectorXd element_force_;
+  Eigen::MatrixXd element_tangent_;
+};
+
+} // namespace brb::analysis

@@ -1,0 +1,260 @@
+// CorotBeam3D: a co-rotational 3D beam (corotational_frame.hpp) around a local
+// small-strain beam with sections at the integration points of a BeamIntegration rule.
+//
+// Local beam. Bending is displacement-based (cubic Hermite transverse displacements): at
+// xi = x / L0 the curvatures are
+//   kappa_y = [(6 xi - 4) theta_iy + (6 xi - 2) theta_jy] / L0, and likewise kappa_z,
+// with the section convention eps = e0 + z kappa_y - y kappa_z. The axial strain is not
+// interpolated: each integration point has its own e0_k, solved so that the axial force
+// is the same at every point (exact axial equilibrium, no distributed axial load) under
+// the compatibility condition sum_k w_k e0_k L0 = u_bar. This removes the axial-bending
+// locking of a constant-strain displacement element when sections yield unevenly
+// (a plastic hinge shifts the neutral axis and needs a varying e0). Torsion is elastic.
+//
+// Local forces [N, m_i, m_j] follow from virtual work: N conjugate to u_bar, and
+//   m_{i,y} = sum_k w_k (6 xi_k - 4) M_{y,k},  m_{j,y} = sum_k w_k (6 xi_k - 2) M_{y,k},
+// (likewise z), the torques -/+ G J (theta_jx - theta_ix) / L0.
+#pragma once
+
+#include "brb/element/beam_integration.hpp"
+#include "brb/element/corotational_frame.hpp"
+#include "brb/element/element.hpp"
+#include "brb/section/fiber_section.hpp"
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace brb::element {
+
+/// The local beam with constant axial force: owns its sections (one per integration point).
+template <class Section> class LocalBeam {
+public:
+  LocalBeam(double length, BeamIntegration integration, std::vector<Section> sections)
+      : length_(length), integration_(std::move(integration)), sections_(std::move(sections)),
+        axial_strain_(integration_.weights.size(), 0.0), committed_axial_strain_(axial_strain_) {}
+
+  /// Local forces and tangent for local deformations d_l = [u_bar, theta_i, theta_j].
+  /// Returns false if the axial equilibrium iteration fails.
+  bool evaluate(const LocalVector& deformation, LocalVector& force, LocalMatrix& tangent,
+                std::string& failure) {
+    const std::size_t points = sections_.size();
+    const double elongation = deformation[0];
+    // Start from the committed strain distribution shifted by the new mean strain.
+    double committed_mean = 0.0;
+    for (std::size_t k = 0; k < points; ++k) {
+      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
+    }
+    for (std::size_t k = 0; k < points; ++k) {
+      axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
+    }
+
+    std::array<Eigen::Vector2d, kMaxPoints> curvature;
+    for (std::size_t k = 0; k < points; ++k)
+      curvature[k] = curvature_at(k, deformation);
+
+    double axial_force = 0.0;
+    bool converged = false;
+    for (int iteration = 0; iteration < kMaxAxialIterations && !converged; ++iteration) {
+      // sections at the current axial strains
+      double flexibility = 0.0, mismatch = 0.0, force_scale = 0.0;
+      for (std::size_t k = 0; k < points; ++k) {
+        const auto& response = sections_[k].evaluate(
+            section::SectionVector(axial_strain_[k], curvature[k][0], curvature[k][1]));
+        const double stiffness = response.tangent(0, 0);
+        if (!(std::abs(stiffness) > 0.0) || !response.force.allFinite()) {
+          failure = "local beam: singular or non-finite axial section stiffness";
+          return false;
+        }
+        section_response_[k] = response;
+        axial_force_at_[k] = response.force[0];
+        axial_stiffness_at_[k] = stiffness;
+        flexibility += integration_.weights[k] / stiffness;
+        mismatch += integration_.weights[k] * (axial_force_at_[k] / stiffness - axial_strain_[k]);
+        force_scale = std::max(force_scale, std::abs(response.force[0]));
+      }
+      // N such that sum_k w_k (e0_k + (N - N_k)/a_k) = u_bar / L0
+      axial_force = (elongation / length_ + mismatch) / flexibility;
+      double worst = 0.0;
+      for (std::size_t k = 0; k < points; ++k) {
+        worst = std::max(worst, std::abs(axial_force_at_[k] - axial_force));
+      }
+      const double tolerance = 1e-10 * (force_scale + axial_force_scale());
+      if (worst <= tolerance) {
+        converged = true;
+        break;
+      }
+      for (std::size_t k = 0; k < points; ++k) {
+        axial_strain_[k] += (axial_force - axial_force_at_[k]) / axial_stiffness_at_[k];
+      }
+    }
+    if (!converged) {
+      failure = "local beam: axial equilibrium between integration points did not converge";
+      return false;
+    }
+
+    // Forces and the statically condensed tangent (e0_k eliminated):
+    //   dN = [du/L0 + sum w_k c_k . G_k dtheta / a_k] / F,  F = sum w_k / a_k,
+    //   dm = sum w_k G_k^T [c_k de0_k + K_bb,k G_k dtheta] (times L0 / L0 = 1).
+    force.setZero();
+    tangent.setZero();
+    double flexibility = 0.0;
+    Eigen::Matrix<double, 4, 1> coupling = Eigen::Matrix<double, 4, 1>::Zero(); // h
+    Eigen::Matrix4d bending = Eigen::Matrix4d::Zero();
+    Eigen::Matrix<double, 4, 1> end_moments = Eigen::Matrix<double, 4, 1>::Zero();
+    for (std::size_t k = 0; k < points; ++k) {
+      const section::SectionResponse& response = section_response_[k];
+      const double a = response.tangent(0, 0);
+      const Eigen::Vector2d c = response.tangent.block<2, 1>(1, 0);
+      const Eigen::Matrix2d kbb = response.tangent.block<2, 2>(1, 1);
+      const Eigen::Matrix<double, 2, 4> g = curvature_matrix(k);
+      const double w = integration_.weights[k];
+      flexibility += w / a;
+      coupling += w * g.transpose() * c / a;
+      bending += w * length_ * g.transpose() * (kbb - c * c.transpose() / a) * g;
+      end_moments += w * length_ * g.transpose() * response.force.tail<2>();
+    }
+    bending += length_ * coupling * coupling.transpose() / flexibility;
+
+    // assemble into d_l order [u, ti_x, ti_y, ti_z, tj_x, tj_y, tj_z]; bending dofs
+    // (ti_y, ti_z, tj_y, tj_z) -> local indices (2, 3, 5, 6)
+    constexpr std::array<int, 4> bend{2, 3, 5, 6};
+    force[0] = axial_force;
+    tangent(0, 0) = 1.0 / (length_ * flexibility);
+    for (int r = 0; r < 4; ++r) {
+      force[bend[r]] = end_moments[r];
+      tangent(bend[r], 0) = coupling[r] / flexibility;
+      tangent(0, bend[r]) = coupling[r] / flexibility;
+      for (int c = 0; c < 4; ++c)
+        tangent(bend[r], bend[c]) = bending(r, c);
+    }
+    const double torsion = torsional_stiffness() / length_;
+    const double twist = deformation[4] - deformation[1];
+    force[1] = -torsion * twist;
+    force[4] = torsion * twist;
+    tangent(1, 1) = tangent(4, 4) = torsion;
+    tangent(1, 4) = tangent(4, 1) = -torsion;
+    twist_ = twist;
+    return true;
+  }
+
+  void commit() {
+    for (auto& section : sections_)
+      section.commit();
+    committed_axial_strain_ = axial_strain_;
+  }
+  void revert_to_committed() {
+    for (auto& section : sections_)
+      section.revert_to_committed();
+    axial_strain_ = committed_axial_strain_;
+  }
+
+  ElementEnergy energy() const {
+    ElementEnergy energy;
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      const double length = integration_.weights[k] * length_;
+      energy.stored += length * sections_[k].stored_energy();
+      energy.dissipated += length * sections_[k].dissipated_energy();
+    }
+    energy.stored += 0.5 * torsional_stiffness() / length_ * twist_ * twist_;
+    return energy;
+  }
+
+  const std::vector<Section>& sections() const { return sections_; }
+  const BeamIntegration& integration() const { return integration_; }
+  double length() const { return length_; }
+  /// Axial strain e0 at each integration point (trial).
+  const std::vector<double>& axial_strains() const { return axial_strain_; }
+
+  static constexpr std::size_t kMaxPoints = 6;
+
+private:
+  static constexpr int kMaxAxialIterations = 30;
+
+  double torsional_stiffness() const { return sections_.front().torsional_stiffness(); }
+  /// A force scale for the axial tolerance: the axial stiffness times a strain of 1e-6.
+  double axial_force_scale() const {
+    double scale = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      scale = std::max(scale, std::abs(axial_stiffness_at_[k]) * 1e-6);
+    }
+    return scale;
+  }
+
+  /// d(kappa_y, kappa_z) / d(theta_iy, theta_iz, theta_jy, theta_jz) at point k.
+  Eigen::Matrix<double, 2, 4> curvature_matrix(std::size_t k) const {
+    const double xi = integration_.locations[k];
+    const double near = (6.0 * xi - 4.0) / length_, far = (6.0 * xi - 2.0) / length_;
+    Eigen::Matrix<double, 2, 4> g;
+    g << near, 0.0, far, 0.0, 0.0, near, 0.0, far;
+    return g;
+  }
+
+  Eigen::Vector2d curvature_at(std::size_t k, const LocalVector& deformation) const {
+    const Eigen::Vector4d rotations(deformation[2], deformation[3], deformation[5], deformation[6]);
+    return curvature_matrix(k) * rotations;
+  }
+
+  double length_;
+  BeamIntegration integration_;
+  std::vector<Section> sections_;
+  std::vector<double> axial_strain_;
+  std::vector<double> committed_axial_strain_;
+  std::array<section::SectionResponse, kMaxPoints> section_response_{};
+  std::array<double, kMaxPoints> axial_force_at_{};
+  std::array<double, kMaxPoints> axial_stiffness_at_{};
+  double twist_ = 0.0;
+};
+
+/// The co-rotational beam element: two nodes, six DOF each.
+template <class Section> class CorotBeam3D final : public Element {
+public:
+  /// `sections`: one per integration point, each built with the characteristic length
+  /// w_k L0 of its point (see make_fiber_sections).
+  CorotBeam3D(std::array<int, 2> nodes, const Vector3& position_i, const Vector3& position_j,
+              const Vector3& vecxz, BeamIntegration integration, std::vector<Section> sections)
+      : nodes_(nodes), frame_(position_i, position_j, vecxz),
+        local_(frame_.initial_length(), std::move(integration), std::move(sections)) {}
+
+  std::span<const int> nodes() const override { return nodes_; }
+
+  bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string& failure) override {
+    if (!frame_.update(configuration[0], configuration[1])) {
+      failure = "co-rotational beam degenerated (zero length or director along the chord)";
+      return false;
+    }
+    LocalVector local_force;
+    LocalMatrix local_tangent;
+    if (!local_.evaluate(frame_.local_deformation(), local_force, local_tangent, failure)) {
+      return false;
+    }
+    GlobalVector global_force;
+    GlobalMatrix global_tangent;
+    frame_.global_response(local_force, local_tangent, global_force, global_tangent);
+    force = global_force;
+    tangent = global_tangent;
+    local_force_ = local_force;
+    return true;
+  }
+
+  void commit() override { local_.commit(); }
+  void revert_to_committed() override { local_.revert_to_committed(); }
+  ElementEnergy energy() const override { return local_.energy(); }
+
+  const CorotationalFrame& frame() const { return frame_; }
+  const LocalBeam<Section>& local_beam() const { return local_; }
+  /// Local forces of the last evaluation: [N, m_i (3), m_j (3)] in the element frame.
+  const LocalVector& local_force() const { return local_force_; }
+
+private:
+  std::array<int, 2> nodes_;
+  CorotationalFrame frame_;
+  LocalBeam<Section> local_;
+  LocalVector local_force_ = LocalVector::Zero();
+};
+
+} // namespace brb::element

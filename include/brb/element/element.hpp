@@ -1,0 +1,52 @@
+// The element interface of the model layer. Elements see their nodes' current
+// configuration (position and nodal triad) and return internal forces and a tangent with
+// respect to nodal translations and spins (6 per node: du_x, du_y, du_z, dw_x, dw_y, dw_z).
+// One virtual call per element per evaluation; the loops inside elements are not virtual.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <span>
+#include <string>
+
+namespace brb::element {
+
+using Vector3 = Eigen::Vector3d;
+using Matrix3 = Eigen::Matrix3d;
+
+/// Current configuration of a node: position x = X + u (mm) and nodal triad R (identity
+/// in the initial configuration; rotated by spins, R <- exp([dw]x) R).
+struct NodeConfiguration {
+  Vector3 position = Vector3::Zero();
+  Matrix3 rotation = Matrix3::Identity();
+};
+
+/// Energies of an element's trial state (N mm).
+struct ElementEnergy {
+  double stored = 0.0;     ///< recoverable (free) energy
+  double dissipated = 0.0; ///< plastic, damage and friction dissipation since the start
+};
+
+class Element {
+public:
+  virtual ~Element() = default;
+
+  /// Model indices of the element's nodes.
+  virtual std::span<const int> nodes() const = 0;
+
+  /// Internal forces (N, N mm; 6 per node) and tangent at the trial configuration of the
+  /// nodes (in the order of nodes()). Returns false with a reason when the element cannot
+  /// evaluate that state (its local iteration failed); the solver then cuts the step and
+  /// the element's committed state is untouched.
+  virtual bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                        Eigen::MatrixXd& tangent, std::string& failure) = 0;
+
+  virtual void commit() = 0;
+  virtual void revert_to_committed() = 0;
+
+  /// Energies of the last evaluated state.
+  virtual ElementEnergy energy() const = 0;
+};
+
+} // namespace brb::element

@@ -1,0 +1,52 @@
+// SteelUniaxial: the closed-form uniaxial-stress evaluation of SteelDamagePlasticity3D
+// (the fiber fast path). Under sigma_22 = sigma_33 = tau = 0 every tensor of the 3D law
+// stays coaxial with diag(1, -1/2, -1/2), so the backward-Euler update of the 3D law
+// reduces exactly to this scalar one; tests check the two agree to round-off.
+#pragma once
+
+#include "brb/material/steel_damage_plasticity_3d.hpp"
+#include "brb/material/steel_parameters.hpp"
+
+#include <optional>
+
+namespace brb::material {
+
+struct SteelStateUniaxial {
+  double plastic_strain = 0.0;
+  double back_stress[HardeningTerms::kMax] = {}; ///< uniaxial back-stresses (MPa)
+  double equivalent_plastic_strain = 0.0;
+  double damage_threshold = 0.0; ///< r (0 = not yet loaded: r0 applies)
+  double damage = 0.0;
+  DissipatedEnergy dissipated;
+};
+
+class SteelUniaxial {
+public:
+  using State = SteelStateUniaxial;
+  struct Response {
+    double stress = 0.0;  ///< MPa
+    double tangent = 0.0; ///< MPa
+    State state;
+  };
+
+  SteelUniaxial(const SteelParameters& parameters, double characteristic_length,
+                LongElementRule rule = LongElementRule::lower_strength);
+
+  State initial_state() const { return State{}; }
+  Response evaluate(const State& committed, double strain) const;
+  double free_energy(const State& state, double strain) const;
+  /// Energy dissipated so far per unit volume (MPa).
+  static double dissipated_energy(const State& state) { return state.dissipated.total; }
+
+  const SteelParameters& parameters() const { return parameters_; }
+  const std::optional<ExponentialSoftening>& softening() const { return softening_; }
+  double stress_scale() const { return parameters_.yield_stress; }
+
+private:
+  SteelParameters parameters_;
+  HardeningTerms terms_;
+  IsotropicHardening isotropic_;
+  std::optional<ExponentialSoftening> softening_;
+};
+
+} // namespace brb::material

@@ -1,0 +1,372 @@
+#include "brb/analysis/static_analysis.hpp"
+
+#include "brb/element/rotation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace brb::analysis {
+
+using element::NodeConfiguration;
+using model::kDofPerNode;
+
+double EnergyBalance::relative_error() const {
+  return std::abs(external_work - stored - dissipated) / std::max(std::abs(external_work), 1e-30);
+}
+
+StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
+    : model_(model), settings_(settings) {
+  committed_.resize(model_.node_count());
+  for (int node = 0; node < model_.node_count(); ++node) {
+    committed_[node].position = model_.coordinates(node);
+  }
+  trial_ = committed_;
+  internal_force_ = Eigen::VectorXd::Zero(model_.dof_count());
+  committed_internal_force_ = internal_force_;
+  reference_load_ = Eigen::VectorXd::Zero(model_.dof_count());
+  constant_load_ = Eigen::VectorXd::Zero(model_.dof_count());
+  number_equations();
+}
+
+void StaticAnalysis::use_displacement_control(int node, model::Dof dof) {
+  if (dof >= model::rx)
+    throw std::invalid_argument("displacement control needs a translation DOF");
+  if (model_.is_fixed(node, dof))
+    throw std::invalid_argument("the controlled DOF is restrained");
+  displacement_control_ = {node, dof};
+  control_value_ = committed_[node].position[dof] - model_.coordinates(node)[dof];
+  number_equations();
+}
+
+void StaticAnalysis::use_load_control(const Eigen::VectorXd& reference_load) {
+  if (reference_load.size() != model_.dof_count())
+    throw std::invalid_argument("load vector size");
+  displacement_control_.reset();
+  reference_load_ = reference_load;
+  control_value_ = 0.0;
+  number_equations();
+}
+
+void StaticAnalysis::set_constant_load(const Eigen::VectorXd& load) {
+  if (load.size() != model_.dof_count())
+    throw std::invalid_argument("load vector size");
+  constant_load_ = load;
+}
+
+void StaticAnalysis::number_equations() {
+  equation_.assign(model_.dof_count(), -1);
+  free_dofs_.clear();
+  for (int node = 0; node < model_.node_count(); ++node) {
+    for (int dof = 0; dof < kDofPerNode; ++dof) {
+      const auto d = static_cast<model::Dof>(dof);
+      const bool controlled = displacement_control_ && displacement_control_->first == node &&
+                              displacement_control_->second == d;
+      if (model_.is_fixed(node, d) || controlled)
+        continue;
+      equation_[model::Model::global_dof(node, d)] = static_cast<int>(free_dofs_.size());
+      free_dofs_.push_back(model::Model::global_dof(node, d));
+    }
+  }
+  pattern_analysed_ = false;
+}
+
+bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
+  internal_force_.setZero();
+  force_scale_ = 0.0;
+  const int control_dof =
+      displacement_control_
+          ? model::Model::global_dof(displacement_control_->first, displacement_control_->second)
+          : -1;
+  if (with_tangent) {
+    triplets_.clear();
+    control_column_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
+  }
+  for (const auto& element : model_.elements()) {
+    const auto nodes = element->nodes();
+    element_nodes_.resize(nodes.size());
+    for (std::size_t a = 0; a < nodes.size(); ++a)
+      element_nodes_[a] = trial_[nodes[a]];
+    if (!element->evaluate(element_nodes_, element_force_, element_tangent_, failure)) {
+      return false;
+    }
+    if (!element_force_.allFinite() || (with_tangent && !element_tangent_.allFinite())) {
+      failure = "an element returned a non-finite force or tangent";
+      return false;
+    }
+    force_scale_ = std::max(force_scale_, element_force_.lpNorm<Eigen::Infinity>());
+    const int element_dofs = static_cast<int>(nodes.size()) * kDofPerNode;
+    for (int a = 0; a < element_dofs; ++a) {
+      const int row = kDofPerNode * nodes[a / kDofPerNode] + a % kDofPerNode;
+      internal_force_[row] += element_force_[a];
+      if (!with_tangent || equation_[row] < 0)
+        continue;
+      for (int b = 0; b < element_dofs; ++b) {
+        const int column = kDofPerNode * nodes[b / kDofPerNode] + b % kDofPerNode;
+        const double value = element_tangent_(a, b);
+        if (equation_[column] >= 0) {
+          triplets_.emplace_back(equation_[row], equation_[column], value);
+        } else if (column == control_dof) {
+          control_column_[equation_[row]] += value;
+        }
+      }
+    }
+  }
+  if (with_tangent) {
+    const auto size = static_cast<Eigen::Index>(free_dofs_.size());
+    tangent_.resize(size, size);
+    tangent_.setFromTriplets(triplets_.begin(), triplets_.end());
+  }
+  return true;
+}
+
+Eigen::VectorXd StaticAnalysis::free_residual(double control) const {
+  Eigen::VectorXd residual(static_cast<Eigen::Index>(free_dofs_.size()));
+  const bool load_control = !displacement_control_;
+  for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
+    const int dof = free_dofs_[e];
+    double external = constant_load_[dof];
+    if (load_control)
+      external += control * reference_load_[dof];
+    residual[static_cast<Eigen::Index>(e)] = external - internal_force_[dof];
+  }
+  return residual;
+}
+
+void StaticAnalysis::apply_free_increment(const Eigen::VectorXd& increment, double scale) {
+  for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
+    const int dof = free_dofs_[e];
+    const int node = dof / kDofPerNode, component = dof % kDofPerNode;
+    const double value = scale * increment[static_cast<Eigen::Index>(e)];
+    if (component < 3) {
+      trial_[node].position[component] += value;
+    }
+  }
+  // spins: R <- exp([dw]x) R, one rotation per node
+  for (int node = 0; node < model_.node_count(); ++node) {
+    element::Vector3 spin = element::Vector3::Zero();
+    bool any = false;
+    for (int k = 0; k < 3; ++k) {
+      const int e = equation_[kDofPerNode * node + 3 + k];
+      if (e >= 0) {
+        spin[k] = scale * increment[e];
+        any = true;
+      }
+    }
+    if (any)
+      trial_[node].rotation = element::rotation_from_vector(spin) * trial_[node].rotation;
+  }
+}
+
+void StaticAnalysis::set_control_value(double value) {
+  if (displacement_control_) {
+    const auto [node, dof] = *displacement_control_;
+    trial_[node].position[dof] = model_.coordinates(node)[dof] + value;
+  }
+}
+
+StaticAnalysis::Attempt StaticAnalysis::newton(double control, double regularisation,
+                                               int max_iterations) {
+  Attempt attempt;
+  bool assembled = false;
+  Eigen::VectorXd residual;
+  for (int iteration = 0; iteration <= max_iterations; ++iteration) {
+    if (!assembled && !assemble(true, attempt.failure))
+      return attempt;
+    assembled = false;
+    residual = free_residual(control);
+    // round-off in the residual is relative to the largest element force, not to the
+    // assembled sum (large axial forces cancel at the nodes of a chain)
+    const double scale =
+        force_scale_ + constant_load_.lpNorm<Eigen::Infinity>() +
+        (displacement_control_ ? 0.0
+                               : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>()) +
+        1.0;
+    if (!residual.allFinite()) {
+      attempt.failure = "non-finite residual";
+      return attempt;
+    }
+    if (residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale) {
+      attempt.converged = true;
+      attempt.iterations = iteration;
+      return attempt;
+    }
+    if (iteration == max_iterations)
+      break;
+
+    Eigen::SparseMatrix<double> matrix = tangent_;
+    if (regularisation > 0.0) {
+      // shift by a fraction of the mean diagonal (pseudo-transient continuation)
+      const double shift = regularisation * matrix.diagonal().cwiseAbs().mean();
+      for (Eigen::Index k = 0; k < matrix.rows(); ++k)
+        matrix.coeffRef(k, k) += shift;
+    }
+    if (!pattern_analysed_) {
+      solver_.analyzePattern(matrix);
+      pattern_analysed_ = true;
+    }
+    solver_.factorize(matrix);
+    if (solver_.info() != Eigen::Success) {
+      attempt.failure = "singular tangent stiffness";
+      return attempt;
+    }
+    const Eigen::VectorXd increment = solver_.solve(residual);
+    if (!increment.allFinite()) {
+      attempt.failure = "non-finite Newton increment";
+      return attempt;
+    }
+
+    // Backtracking line search on the residual norm.
+    const std::vector<NodeConfiguration> start = trial_;
+    const double start_norm = residual.norm();
+    double step = 1.0;
+    for (int search = 0;; ++search) {
+      apply_free_increment(increment, step);
+      std::string failure;
+      const bool ok = assemble(true, failure);
+      const bool accept = ok && (!settings_.line_search || search == 6 ||
+                                 free_residual(control).norm() < start_norm);
+      if (accept) {
+        assembled = true;
+        break;
+      }
+      if (search == 6) {
+        attempt.failure = failure.empty() ? "line search failed" : failure;
+        return attempt;
+      }
+      trial_ = start;
+      step *= 0.5;
+    }
+  }
+  attempt.failure =
+      "Newton-Raphson did not converge in " + std::to_string(max_iterations) + " iterations";
+  attempt.iterations = max_iterations;
+  return attempt;
+}
+
+void StaticAnalysis::commit(double control) {
+  // Work of the converged forces over the increment (trapezoidal); translations are
+  // additive, rotations enter through the incremental rotation vector.
+  double work = 0.0;
+  for (int node = 0; node < model_.node_count(); ++node) {
+    const element::Vector3 translation = trial_[node].position - committed_[node].position;
+    const element::Vector3 rotation = element::vector_from_rotation(
+        trial_[node].rotation * committed_[node].rotation.transpose());
+    for (int k = 0; k < 3; ++k) {
+      const int t = kDofPerNode * node + k, r = t + 3;
+      work += 0.5 * (committed_internal_force_[t] + internal_force_[t]) * translation[k];
+      work += 0.5 * (committed_internal_force_[r] + internal_force_[r]) * rotation[k];
+    }
+  }
+  energy_.external_work += work;
+  for (const auto& element : model_.elements())
+    element->commit();
+  committed_ = trial_;
+  committed_internal_force_ = internal_force_;
+  control_value_ = control;
+  if (displacement_control_) {
+    control_force_ = internal_force_[model::Model::global_dof(displacement_control_->first,
+                                                              displacement_control_->second)];
+  } else {
+    control_force_ = reference_load_.dot(internal_force_);
+  }
+  energy_.stored = 0.0;
+  energy_.dissipated = 0.0;
+  for (const auto& element : model_.elements()) {
+    const auto energy = element->energy();
+    energy_.stored += energy.stored;
+    energy_.dissipated += energy.dissipated;
+  }
+}
+
+void StaticAnalysis::revert() {
+  trial_ = committed_;
+  for (const auto& element : model_.elements())
+    element->revert_to_committed();
+}
+
+bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport& report) {
+  report.deepest_halving = std::max(report.deepest_halving, depth);
+  // Tangent predictor from the converged state.
+  revert();
+  Attempt attempt;
+  if (assemble(true, attempt.failure)) {
+    Eigen::VectorXd load;
+    if (displacement_control_) {
+      load = -(to - from) * control_column_;
+    } else {
+      load = Eigen::VectorXd(static_cast<Eigen::Index>(free_dofs_.size()));
+      for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
+        load[static_cast<Eigen::Index>(e)] = (to - from) * reference_load_[free_dofs_[e]];
+      }
+    }
+    if (!pattern_analysed_) {
+      solver_.analyzePattern(tangent_);
+      pattern_analysed_ = true;
+    }
+    solver_.factorize(tangent_);
+    set_control_value(to);
+    if (solver_.info() == Eigen::Success) {
+      const Eigen::VectorXd predictor = solver_.solve(load);
+      if (predictor.allFinite())
+        apply_free_increment(predictor, 1.0);
+    }
+    attempt = newton(to, 0.0, settings_.max_iterations);
+  }
+  report.iterations += attempt.iterations;
+  if (attempt.converged) {
+    commit(to);
+    ++report.substeps;
+    return true;
+  }
+  revert();
+  if (depth < settings_.max_halvings) {
+    const double middle = 0.5 * (from + to);
+    return try_increment(from, middle, depth + 1, report) &&
+           try_increment(middle, to, depth + 1, report);
+  }
+  // At the floor: regularised Newton, more iterations.
+  report.used_regularised_newton = true;
+  ++regularised_steps_;
+  set_control_value(to);
+  attempt = newton(to, 1e-3, settings_.fallback_iterations);
+  report.iterations += attempt.iterations;
+  if (attempt.converged) {
+    commit(to);
+    ++report.substeps;
+    return true;
+  }
+  revert();
+  report.failure =
+      "step from " + std::to_string(from) + " to " + std::to_string(to) + ": " + attempt.failure;
+  return false;
+}
+
+StepReport StaticAnalysis::step_to(double target) {
+  StepReport report;
+  report.substeps = 0;
+  report.converged = try_increment(control_value_, target, 0, report);
+  total_iterations_ += report.iterations;
+  total_substeps_ += report.substeps;
+  return report;
+}
+
+StepReport StaticAnalysis::initialise() {
+  return step_to(control_value_);
+}
+
+double StaticAnalysis::displacement(int node, model::Dof dof) const {
+  if (dof < model::rx)
+    return committed_[node].position[dof] - model_.coordinates(node)[dof];
+  return element::vector_from_rotation(committed_[node].rotation)[dof - model::rx];
+}
+
+Eigen::SparseMatrix<double> StaticAnalysis::free_tangent() {
+  revert();
+  std::string failure;
+  if (!assemble(true, failure))
+    throw std::runtime_error("free_tangent: " + failure);
+  return tangent_;
+}
+
+} // namespace brb::analysis

@@ -1,0 +1,78 @@
+// Scalar consistency equation shared by the 3D and the uniaxial steel return maps.
+//
+// With backward-Euler Armstrong-Frederick back-stresses the consistency condition reduces
+// to one equation in the plastic multiplier dp (equivalent plastic strain increment):
+//   f(dp) = |beta(dp)|_eq - [E_el dp + sum_k C_k dp / (1 + gamma_k dp) + R(p_n + dp)] = 0,
+// E_el = 3G in 3D (|.|_eq = sqrt(3/2) |.|) and E in 1D. Since |beta'|_eq <= sum C_k/(1+gamma dp)^2
+// (each back-stress stays inside its saturation ball |alpha_k|_eq <= C_k / gamma_k),
+// f' <= -E_el < 0: f is strictly decreasing with a unique root in [0, f(0) / E_el].
+#pragma once
+
+#include "brb/material/steel_parameters.hpp"
+
+#include <cmath>
+
+namespace brb::material {
+
+/// Trial yield function values below this fraction of fy count as elastic.
+inline constexpr double kYieldTolerance = 1e-12;
+/// Damage loads only when tau exceeds the threshold r by more than this fraction, so a
+/// re-evaluation at a converged strain (tau = r up to round-off) is consistently unloading.
+inline constexpr double kDamageTolerance = 1e-12;
+
+struct ReturnMapEquation {
+  double residual = 0.0; ///< f(dp)
+  double slope = 0.0;    ///< f'(dp) < 0
+};
+
+/// E_el dp + sum_k C_k dp / (1 + gamma_k dp) + R(p_n + dp): what the relative stress must exceed.
+inline double hardening_resistance(const HardeningTerms& terms, const IsotropicHardening& isotropic,
+                                   double elastic_modulus, double committed_p, double increment) {
+  double resistance = elastic_modulus * increment + isotropic.radius(committed_p + increment);
+  for (int k = 0; k < terms.count; ++k) {
+    resistance += terms.modulus[k] * increment / (1.0 + terms.recall[k] * increment);
+  }
+  return resistance;
+}
+
+inline double hardening_resistance_slope(const HardeningTerms& terms,
+                                         const IsotropicHardening& isotropic,
+                                         double elastic_modulus, double committed_p,
+                                         double increment) {
+  double slope = elastic_modulus + isotropic.slope(committed_p + increment);
+  for (int k = 0; k < terms.count; ++k) {
+    const double factor = 1.0 + terms.recall[k] * increment;
+    slope += terms.modulus[k] / (factor * factor);
+  }
+  return slope;
+}
+
+/// Safeguarded Newton on the bracket [0, f(0)/E_el]; converges to round-off.
+template <class Consistency>
+double solve_return_map(const Consistency& consistency, double trial_function,
+                        double elastic_modulus) {
+  double lower = 0.0;
+  double upper = trial_function / elastic_modulus;
+  const double step_tolerance = 1e-15 * upper;
+  double increment = 0.0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const ReturnMapEquation equation = consistency(increment);
+    if (equation.residual == 0.0)
+      break;
+    if (equation.residual > 0.0) {
+      lower = increment;
+    } else {
+      upper = increment;
+    }
+    double next = increment - equation.residual / equation.slope;
+    if (!(next > lower && next < upper))
+      next = 0.5 * (lower + upper);
+    const double step = std::abs(next - increment);
+    increment = next;
+    if (step <= step_tolerance)
+      break;
+  }
+  return increment;
+}
+
+} // namespace brb::material

@@ -1,0 +1,31 @@
+#include "brb/model/model.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace brb::model {
+
+int Model::add_node(const Vector3& coordinates) {
+  coordinates_.push_back(coordinates);
+  fixed_.push_back({false, false, false, false, false, false});
+  return node_count() - 1;
+}
+
+void Model::fix(int node, Dof dof) {
+  fixed_.at(node)[dof] = true;
+}
+
+void Model::fix_all(int node) {
+  fixed_.at(node).fill(true);
+}
+
+void Model::check_element_nodes(const element::Element& element) const {
+  for (const int node : element.nodes()) {
+    if (node < 0 || node >= node_count()) {
+      throw std::out_of_range("element refers to node " + std::to_string(node) +
+                              " but the model has " + std::to_string(node_count()) + " nodes");
+    }
+  }
+}
+
+} // namespace brb::model
