@@ -27,6 +27,10 @@ StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
   reference_load_ = Eigen::VectorXd::Zero(model_.dof_count());
   constant_load_ = Eigen::VectorXd::Zero(model_.dof_count());
   number_equations();
+  for (int node = 0; node < model_.node_count(); ++node) {
+    model_extent_ = std::max(model_extent_, model_.coordinates(node).cwiseAbs().maxCoeff());
+  }
+  model_extent_ = std::max(model_extent_, 1.0);
 }
 
 void StaticAnalysis::use_displacement_control(int node, model::Dof dof) {
@@ -175,13 +179,18 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double regularisa
       return attempt;
     assembled = false;
     residual = free_residual(control);
-    // round-off in the residual is relative to the largest element force, not to the
-    // assembled sum (large axial forces cancel at the nodes of a chain)
-    const double scale =
-        force_scale_ + constant_load_.lpNorm<Eigen::Infinity>() +
+    // Round-off in the residual is relative to the largest element force, not to the
+    // assembled sum (large axial forces cancel at the nodes of a chain), and it has a floor:
+    // positions carry a relative error of ~1e-16 of the model's size, which the stiffest
+    // element turns into force. The tolerance must stay above both.
+    const double load =
+        constant_load_.lpNorm<Eigen::Infinity>() +
         (displacement_control_ ? 0.0
-                               : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>()) +
-        1.0;
+                               : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
+    const double round_off_floor = 1e-14 * model_extent_ *
+                                   tangent_.diagonal().cwiseAbs().maxCoeff() /
+                                   settings_.relative_force_tolerance;
+    const double scale = force_scale_ + load + round_off_floor + 1e-6;
     if (!residual.allFinite()) {
       attempt.failure = "non-finite residual";
       return attempt;
@@ -314,13 +323,26 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     attempt = newton(to, 0.0, settings_.max_iterations);
   }
   report.iterations += attempt.iterations;
+  const bool at_floor = depth >= settings_.max_halvings;
+  if (attempt.converged && settings_.require_stable_equilibrium) {
+    const bool stable = tangent_is_positive_definite();
+    if (!stable && committed_stable_ && depth < settings_.stability_halvings) {
+      attempt.converged = false;
+      attempt.failure = "converged to an unstable equilibrium";
+    } else if (!stable && committed_stable_) {
+      ++report.unstable_accepted;
+      ++unstable_accepted_;
+    }
+    if (attempt.converged)
+      committed_stable_ = stable;
+  }
   if (attempt.converged) {
     commit(to);
     ++report.substeps;
     return true;
   }
   revert();
-  if (depth < settings_.max_halvings) {
+  if (!at_floor) {
     const double middle = 0.5 * (from + to);
     return try_increment(from, middle, depth + 1, report) &&
            try_increment(middle, to, depth + 1, report);
@@ -359,6 +381,19 @@ double StaticAnalysis::displacement(int node, model::Dof dof) const {
   if (dof < model::rx)
     return committed_[node].position[dof] - model_.coordinates(node)[dof];
   return element::vector_from_rotation(committed_[node].rotation)[dof - model::rx];
+}
+
+bool StaticAnalysis::tangent_is_positive_definite() const {
+  if (tangent_.rows() == 0)
+    return true;
+  // Definiteness of the symmetric part (the tangent is non-symmetric away from equilibrium
+  // and with non-associated terms, but stability is a property of the quadratic form).
+  const Eigen::SparseMatrix<double> symmetric =
+      0.5 * (tangent_ + Eigen::SparseMatrix<double>(tangent_.transpose()));
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(symmetric);
+  if (factor.info() != Eigen::Success)
+    return false;
+  return factor.vectorD().minCoeff() > 0.0;
 }
 
 Eigen::SparseMatrix<double> StaticAnalysis::free_tangent() {

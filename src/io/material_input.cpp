@@ -77,45 +77,51 @@ InputError input_error_from(const ParameterError& error, const ParameterSource& 
   return InputError(source.file, path.empty() ? "top level" : path, expected);
 }
 
-SteelInput parse_steel_input(std::string_view json_text, const std::string& source) {
-  SteelInput input;
-  input.source = ParameterSource{source, parse_json(json_text, source)};
-  const JsonValue root(input.source.document, source);
-  root.expect_object(
-      {"units", "E", "nu", "fy", "H_kin", "H_iso", "chaboche", "voce", "fu", "Gf", "lc"},
-      "an object of steel parameters");
-  check_units(root);
+material::SteelParameters read_steel_object(const JsonValue& object,
+                                            std::optional<double>* characteristic_length) {
+  if (characteristic_length) {
+    object.expect_object(
+        {"units", "E", "nu", "fy", "H_kin", "H_iso", "chaboche", "voce", "fu", "Gf", "lc"},
+        "an object of steel parameters");
+  } else {
+    object.expect_object(
+        {"units", "E", "nu", "fy", "H_kin", "H_iso", "chaboche", "voce", "fu", "Gf"},
+        "an object of steel parameters (lc comes from the element)");
+  }
+  check_units(object);
 
-  auto& parameters = input.parameters;
-  parameters.youngs_modulus = required_number(root, "E", "Young's modulus E, MPa");
-  parameters.poissons_ratio = required_number(root, "nu", "Poisson's ratio nu");
-  parameters.yield_stress = required_number(root, "fy", "yield stress fy, MPa");
+  material::SteelParameters parameters;
+  parameters.youngs_modulus = required_number(object, "E", "Young's modulus E, MPa");
+  parameters.poissons_ratio = required_number(object, "nu", "Poisson's ratio nu");
+  parameters.yield_stress = required_number(object, "fy", "yield stress fy, MPa");
   parameters.kinematic_hardening =
-      required_number(root, "H_kin", "linear kinematic hardening modulus H_kin, MPa");
+      required_number(object, "H_kin", "linear kinematic hardening modulus H_kin, MPa");
   parameters.isotropic_hardening =
-      required_number(root, "H_iso", "linear isotropic hardening modulus H_iso, MPa");
+      required_number(object, "H_iso", "linear isotropic hardening modulus H_iso, MPa");
 
-  if (const auto chaboche = root.find("chaboche")) {
+  if (const auto chaboche = object.find("chaboche")) {
     parameters.chaboche = read_chaboche_terms(*chaboche);
   }
-  if (const auto voce = root.find("voce")) {
+  if (const auto voce = object.find("voce")) {
     voce->expect_object({"Q", "b"}, "an object {\"Q\": MPa, \"b\": -}");
     parameters.voce_saturation = required_number(*voce, "Q", "Voce saturation stress Q, MPa");
     parameters.voce_rate = required_number(*voce, "b", "Voce rate b, -");
   }
 
-  // Damage is on exactly when Gf is given; fu and lc belong to it.
-  if (root.find("Gf")) {
+  // Damage is on exactly when Gf is given; fu (and lc, in a material file) belong to it.
+  if (object.find("Gf")) {
     parameters.damage = material::SteelDamageParameters{
         .onset_stress =
-            required_number(root, "fu", "damage onset stress fu, MPa; required when Gf is given"),
-        .fracture_energy = required_number(root, "Gf", "fracture energy Gf, N/mm"),
+            required_number(object, "fu", "damage onset stress fu, MPa; required when Gf is given"),
+        .fracture_energy = required_number(object, "Gf", "fracture energy Gf, N/mm"),
     };
-    input.characteristic_length =
-        required_number(root, "lc", "characteristic length lc, mm; required when Gf is given");
+    if (characteristic_length) {
+      *characteristic_length =
+          required_number(object, "lc", "characteristic length lc, mm; required when Gf is given");
+    }
   } else {
     for (const std::string_view damage_key : {"fu", "lc"}) {
-      if (const auto orphan = root.find(damage_key)) {
+      if (const auto orphan = object.find(damage_key)) {
         throw orphan->error(std::string(damage_key) +
                             " is used only by damage: give Gf (fracture energy, N/mm) too, or "
                             "remove " +
@@ -124,7 +130,23 @@ SteelInput parse_steel_input(std::string_view json_text, const std::string& sour
     }
   }
 
-  // The law's own checks: parameter ranges, and lc short enough for the softening.
+  // The parameter ranges (the softening is checked where lc is known).
+  try {
+    parameters.validate();
+  } catch (const ParameterError& error) {
+    throw InputError(object.source(), object.path() + json_path_of_parameter(error.field()),
+                     error.what());
+  }
+  return parameters;
+}
+
+SteelInput parse_steel_input(std::string_view json_text, const std::string& source) {
+  SteelInput input;
+  input.source = ParameterSource{source, parse_json(json_text, source)};
+  const JsonValue root(input.source.document, source);
+  input.parameters = read_steel_object(root, &input.characteristic_length);
+
+  // The law's own checks: lc short enough for the softening.
   build_checked(input.source, [&input] {
     return material::SteelUniaxial(input.parameters, input.characteristic_length_for_law(),
                                    LongElementRule::reject);

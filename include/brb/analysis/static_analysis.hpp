@@ -17,6 +17,7 @@
 #include "brb/model/model.hpp"
 
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include <optional>
 #include <string>
@@ -32,6 +33,15 @@ struct NewtonSettings {
   bool line_search = true;
   int max_halvings = 12;         ///< substep floor: step / 2^max_halvings
   int fallback_iterations = 200; ///< regularised Newton at the floor
+  /// Accept a converged (sub)step only if its tangent is positive definite (a stable
+  /// equilibrium under the control); otherwise cut the step. Newton started far from the
+  /// path can converge onto an unstable branch (e.g. a bowed column carried straight past
+  /// its Euler load, bowed against its imperfection); cutting the step keeps it on the
+  /// stable one. The check applies when the step starts from a stable state; after
+  /// `stability_halvings` cuts an unstable state is accepted and reported (the path itself
+  /// has lost stability: a limit point, or a plastic mechanism).
+  bool require_stable_equilibrium = true;
+  int stability_halvings = 6;
 };
 
 /// What one call of step_to() did.
@@ -41,7 +51,8 @@ struct StepReport {
   int substeps = 1;        ///< converged substeps taken
   int deepest_halving = 0; ///< 0: the step went through whole
   bool used_regularised_newton = false;
-  std::string failure; ///< why it stopped, when it did not converge
+  int unstable_accepted = 0; ///< substeps accepted at the floor with an unstable tangent
+  std::string failure;       ///< why it stopped, when it did not converge
 };
 
 /// Totals over the analysis (N mm).
@@ -83,6 +94,7 @@ public:
   int total_iterations() const { return total_iterations_; }
   int total_substeps() const { return total_substeps_; }
   int regularised_steps() const { return regularised_steps_; }
+  int unstable_accepted() const { return unstable_accepted_; }
 
   /// Solves the initial state (control at zero) so that reactions and energies exist.
   StepReport initialise();
@@ -108,6 +120,8 @@ private:
   Attempt newton(double control, double regularisation, int max_iterations);
   bool try_increment(double from, double to, int depth, StepReport& report);
   void commit(double control);
+  /// Whether the tangent of the last assembly (a converged state) is positive definite.
+  bool tangent_is_positive_definite() const;
   void revert();
 
   model::Model& model_;
@@ -123,7 +137,8 @@ private:
   std::vector<element::NodeConfiguration> trial_;
   Eigen::VectorXd internal_force_;
   Eigen::VectorXd committed_internal_force_;
-  double force_scale_ = 0.0; // largest element force component of the last assembly
+  double force_scale_ = 0.0;  // largest element force component of the last assembly
+  double model_extent_ = 1.0; // largest coordinate magnitude (mm), for the round-off floor
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> tangent_; // free x free
   Eigen::VectorXd control_column_;      // d F_free / d control DOF
@@ -136,6 +151,8 @@ private:
   int total_iterations_ = 0;
   int total_substeps_ = 0;
   int regularised_steps_ = 0;
+  int unstable_accepted_ = 0;
+  bool committed_stable_ = true;
 
   // element buffers
   std::vector<element::NodeConfiguration> element_nodes_;

@@ -64,6 +64,15 @@ struct MortarInput {
   ParameterSource source;
 };
 
+class JsonValue;
+
+/// Steel parameters from a JSON object of the steel schema, anywhere in a file (errors carry
+/// the object's path). With `characteristic_length` the key lc is read (required with Gf);
+/// without it lc is rejected, as in a brace file where each fiber gets lc from its element.
+/// Checks the parameter ranges (SteelParameters::validate).
+material::SteelParameters read_steel_object(const JsonValue& object,
+                                            std::optional<double>* characteristic_length);
+
 /// Parses and checks steel parameters: schema (keys, types), ranges (SteelParameters::validate)
 /// and the softening (lc shorter than 2 Gf E / fu^2, LongElementRule::reject).
 SteelInput parse_steel_input(std::string_view json_text, const std::string& source);

@@ -1,0 +1,56 @@
+// A virtual cyclic test of a brace: displacement control of the axial deformation (change
+// of distance between the two outer nodes, elongation positive) through a loading history,
+// with the hysteresis, per-cycle metrics and the solver's account of what it did.
+#pragma once
+
+#include "brb/analysis/static_analysis.hpp"
+#include "brb/model/brace_model.hpp"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace brb::analysis {
+
+struct CyclicStep {
+  int step = 0;                          ///< 0 is the unloaded initial state
+  int cycle = 0;                         ///< full cycle the point belongs to (0: initial point)
+  double deformation = 0.0;              ///< mm, elongation positive
+  double force = 0.0;                    ///< N, tension positive
+  double max_lateral_displacement = 0.0; ///< mm, largest lateral motion of a node
+  int substeps = 1;                      ///< substeps the step needed
+};
+
+struct CycleMetrics {
+  int index = 0;                ///< 1-based
+  double amplitude = 0.0;       ///< mm (from the protocol)
+  double energy = 0.0;          ///< N mm, loop area (integral of F d delta over the cycle)
+  double max_tension = 0.0;     ///< N
+  double max_compression = 0.0; ///< N (negative)
+};
+
+struct CyclicTestResult {
+  std::vector<CyclicStep> steps;
+  std::vector<CycleMetrics> cycles; ///< cycles that were completed
+  bool completed = false;
+  std::string stop_reason;   ///< empty when completed
+  double energy_total = 0.0; ///< N mm, integral of F d delta over the whole history
+  double max_tension = 0.0;
+  double max_compression = 0.0;
+  EnergyBalance energy_balance; ///< external work vs stored + dissipated (all elements)
+  int iterations = 0;
+  int substeps = 0;
+  int regularised_steps = 0;
+  int unstable_accepted = 0; ///< substeps accepted although their equilibrium was unstable
+};
+
+/// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
+/// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
+/// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
+/// and the fallback algorithm) and says why.
+CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
+                                 std::span<const int> cycle,
+                                 std::span<const double> cycle_amplitude,
+                                 NewtonSettings settings = {});
+
+} // namespace brb::analysis

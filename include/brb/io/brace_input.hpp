@@ -1,0 +1,17 @@
+// Brace files (the `brb` brace schema, README "Brace files"): JSON with comments, read into
+// a model::BraceSpec. Every problem is an InputError naming the file, the JSON path and
+// what was expected.
+#pragma once
+
+#include "brb/model/brace_spec.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace brb::io {
+
+model::BraceSpec parse_brace(std::string_view json_text, const std::string& source);
+model::BraceSpec read_brace(const std::filesystem::path& file);
+
+} // namespace brb::io

@@ -1,0 +1,69 @@
+#include "brb/analysis/cyclic_test.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brb::analysis {
+
+CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
+                                 std::span<const int> cycle,
+                                 std::span<const double> cycle_amplitude, NewtonSettings settings) {
+  CyclicTestResult result;
+  StaticAnalysis analysis(brace.model, settings);
+  analysis.use_displacement_control(brace.end_node, model::ux);
+  std::vector<element::Vector3> initial_positions;
+  for (const int node : brace.nodes)
+    initial_positions.push_back(brace.model.coordinates(node));
+
+  const auto lateral = [&] {
+    double largest = 0.0;
+    for (std::size_t n = 0; n < brace.nodes.size(); ++n) {
+      const element::Vector3 motion = analysis.node(brace.nodes[n]).position - initial_positions[n];
+      largest = std::max(largest, std::hypot(motion.y(), motion.z()));
+    }
+    return largest;
+  };
+
+  result.steps.push_back({0, cycle.empty() ? 0 : cycle[0], 0.0, 0.0, 0.0, 0});
+  CycleMetrics current;
+  for (std::size_t k = 1; k < deformation.size(); ++k) {
+    const StepReport report = analysis.step_to(deformation[k]);
+    if (!report.converged) {
+      result.stop_reason = "step " + std::to_string(k) + " (deformation " +
+                           std::to_string(deformation[k]) + " mm): " + report.failure;
+      break;
+    }
+    CyclicStep step{static_cast<int>(k),      cycle[k],  analysis.control_value(),
+                    analysis.control_force(), lateral(), report.substeps};
+    const CyclicStep& previous = result.steps.back();
+    const double work =
+        0.5 * (step.force + previous.force) * (step.deformation - previous.deformation);
+    result.energy_total += work;
+    result.max_tension = std::max(result.max_tension, step.force);
+    result.max_compression = std::min(result.max_compression, step.force);
+
+    if (step.cycle != current.index) {
+      current = CycleMetrics{};
+      current.index = step.cycle;
+      if (step.cycle >= 1 && static_cast<std::size_t>(step.cycle) <= cycle_amplitude.size()) {
+        current.amplitude = cycle_amplitude[step.cycle - 1];
+      }
+    }
+    current.energy += work;
+    current.max_tension = std::max(current.max_tension, step.force);
+    current.max_compression = std::min(current.max_compression, step.force);
+    const bool cycle_ends = k + 1 == deformation.size() || cycle[k + 1] != step.cycle;
+    if (cycle_ends && step.cycle >= 1)
+      result.cycles.push_back(current);
+    result.steps.push_back(step);
+  }
+  result.completed = result.stop_reason.empty();
+  result.energy_balance = analysis.energy();
+  result.iterations = analysis.total_iterations();
+  result.substeps = analysis.total_substeps();
+  result.regularised_steps = analysis.regularised_steps();
+  result.unstable_accepted = analysis.unstable_accepted();
+  return result;
+}
+
+} // namespace brb::analysis

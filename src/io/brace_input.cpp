@@ -1,0 +1,242 @@
+#include "brb/io/brace_input.hpp"
+
+#include "brb/io/json_input.hpp"
+#include "brb/io/material_input.hpp"
+#include "brb/material/parameter_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace brb::io {
+namespace {
+
+using model::SectionShape;
+using model::SectionSpec;
+
+double positive_length(const JsonValue& object, std::string_view key, std::string_view meaning) {
+  const JsonValue value = object.at(key, meaning);
+  const double number = value.number(meaning);
+  if (!(number > 0.0)) {
+    throw value.error(std::string(meaning) + " must be > 0 mm (got " +
+                      describe_json_value(value.json()) + ")");
+  }
+  return number;
+}
+
+int positive_count(const JsonValue& value, std::string_view meaning) {
+  const double number = value.number(meaning);
+  if (!(number >= 1.0) || number != std::floor(number) || number > 100000.0) {
+    throw value.error(std::string(meaning) + " must be a whole number >= 1 (got " +
+                      describe_json_value(value.json()) + ")");
+  }
+  return static_cast<int>(number);
+}
+
+SectionSpec read_section(const JsonValue& object) {
+  object.expect_object({"shape", "width", "depth", "diameter", "thickness", "wall", "fibers"},
+                       "a section object {\"shape\": ..., dimensions in mm, \"fibers\": [a, b]}");
+  const JsonValue shape_value = object.at(
+      "shape", "section shape: rectangle, circle, cruciform, rectangular_tube or circular_tube");
+  const std::string shape = shape_value.string("section shape");
+  SectionSpec section;
+  std::vector<std::string_view> dimensions;
+  std::pair<int, int> default_fibers;
+  if (shape == "rectangle") {
+    section.shape = SectionShape::rectangle;
+    dimensions = {"width", "depth"};
+    default_fibers = {8, 8};
+  } else if (shape == "circle") {
+    section.shape = SectionShape::circle;
+    dimensions = {"diameter"};
+    default_fibers = {4, 16};
+  } else if (shape == "cruciform") {
+    section.shape = SectionShape::cruciform;
+    dimensions = {"width", "depth", "thickness"};
+    default_fibers = {8, 4};
+  } else if (shape == "rectangular_tube") {
+    section.shape = SectionShape::rectangular_tube;
+    dimensions = {"width", "depth", "wall"};
+    default_fibers = {8, 2};
+  } else if (shape == "circular_tube") {
+    section.shape = SectionShape::circular_tube;
+    dimensions = {"diameter", "wall"};
+    default_fibers = {2, 24};
+  } else {
+    throw shape_value.error("unknown section shape \"" + shape +
+                            "\"; expected rectangle, circle, cruciform, rectangular_tube or "
+                            "circular_tube");
+  }
+  for (const std::string_view key : {"width", "depth", "diameter", "thickness", "wall"}) {
+    const bool used = std::find(dimensions.begin(), dimensions.end(), key) != dimensions.end();
+    if (const auto given = object.find(key); given && !used) {
+      throw given->error("a " + shape + " has no dimension \"" + std::string(key) + "\"");
+    }
+  }
+  for (const std::string_view key : dimensions) {
+    const double value = positive_length(object, key, std::string(key) + " of the " + shape);
+    if (key == "width")
+      section.width = value;
+    if (key == "depth")
+      section.depth = value;
+    if (key == "diameter")
+      section.diameter = value;
+    if (key == "thickness")
+      section.thickness = value;
+    if (key == "wall")
+      section.wall = value;
+  }
+  std::tie(section.fibers_a, section.fibers_b) = default_fibers;
+  if (const auto fibers = object.find("fibers")) {
+    if (fibers->expect_array(2, "two fiber counts") != 2) {
+      throw fibers->error("expected two fiber counts [a, b] (rectangle: along y and z; circle "
+                          "and circular tube: rings and sectors; cruciform and rectangular tube: "
+                          "along and through the plates)");
+    }
+    section.fibers_a = positive_count(fibers->element(0), "fiber count");
+    section.fibers_b = positive_count(fibers->element(1), "fiber count");
+  }
+  try {
+    const auto layout = section.mesh(); // the meshers check the geometry (e.g. wall < radius)
+    (void)layout;
+  } catch (const ParameterError& error) {
+    throw InputError(object.source(), json_pointer_append(object.path(), error.field()),
+                     error.what());
+  }
+  return section;
+}
+
+model::ZoneSpec read_zone(const JsonValue& object, std::string_view what) {
+  object.expect_object({"length", "section", "elements"}, what);
+  model::ZoneSpec zone;
+  zone.length = positive_length(object, "length", "zone length at each end");
+  zone.section = read_section(object.at("section", "the zone's section"));
+  if (const auto elements = object.find("elements")) {
+    zone.elements = positive_count(*elements, "number of elements per end");
+  }
+  return zone;
+}
+
+} // namespace
+
+model::BraceSpec parse_brace(std::string_view json_text, const std::string& source) {
+  const nlohmann::json document = parse_json(json_text, source);
+  const JsonValue root(document, source);
+  root.expect_object(
+      {"name", "units", "core", "transition", "connection", "ends", "imperfection", "casing"},
+      "a brace object");
+  model::BraceSpec spec;
+  if (const auto name = root.find("name"))
+    spec.name = name->string("brace name");
+  if (const auto units = root.find("units")) {
+    const std::string value = units->string("unit system");
+    if (value != "mm") {
+      throw units->error("unsupported unit system \"" + value + "\"; expected \"mm\" (N, mm, MPa)");
+    }
+  }
+
+  const JsonValue core = root.at("core", "the steel core {section, steel, yielding_length, ...}");
+  core.expect_object({"section", "steel", "yielding_length", "elements", "integration"},
+                     "a core object");
+  spec.core_section = read_section(core.at("section", "the core's cross-section"));
+  spec.steel = read_steel_object(core.at("steel", "the core steel's parameters"), nullptr);
+  spec.yielding_length = positive_length(core, "yielding_length", "yielding length of the core");
+  if (const auto elements = core.find("elements")) {
+    spec.core_elements = positive_count(*elements, "number of core elements");
+  }
+  if (const auto integration = core.find("integration")) {
+    integration->expect_object({"rule", "points"}, "an integration object {rule, points}");
+    if (const auto rule = integration->find("rule")) {
+      const std::string name = rule->string("integration rule");
+      if (name == "gauss_lobatto") {
+        spec.integration_rule = element::IntegrationRule::gauss_lobatto;
+      } else if (name == "gauss_legendre") {
+        spec.integration_rule = element::IntegrationRule::gauss_legendre;
+      } else {
+        throw rule->error("unknown integration rule \"" + name +
+                          "\"; expected gauss_lobatto or gauss_legendre");
+      }
+    }
+    if (const auto points = integration->find("points")) {
+      spec.integration_points = positive_count(*points, "number of integration points");
+    }
+    try {
+      element::BeamIntegration::make(spec.integration_rule, spec.integration_points);
+    } catch (const ParameterError& error) {
+      throw InputError(source, json_pointer_append(integration->path(), "points"), error.what());
+    }
+  }
+
+  for (const auto& [key, zone] :
+       {std::pair{"transition", &spec.transition}, std::pair{"connection", &spec.connection}}) {
+    if (const auto value = root.find(key); value && !value->json().is_null()) {
+      *zone = read_zone(*value, std::string("a ") + key + " zone {length, section, elements}");
+    }
+  }
+
+  if (const auto ends = root.find("ends")) {
+    const std::string value = ends->string("end conditions");
+    if (value == "pinned") {
+      spec.ends = model::EndCondition::pinned;
+    } else if (value == "fixed") {
+      spec.ends = model::EndCondition::fixed;
+    } else {
+      throw ends->error("unknown end conditions \"" + value + "\"; expected pinned or fixed");
+    }
+  }
+
+  // Default imperfection: a bow of L/1000 about the weak axis.
+  const section::FiberLayout core_layout = spec.core_section.mesh();
+  const model::BendingAxis weak = core_layout.second_moment_y() <= core_layout.second_moment_z()
+                                      ? model::BendingAxis::z
+                                      : model::BendingAxis::y;
+  spec.imperfection = {model::ImperfectionShape::bow, spec.total_length() / 1000.0, weak};
+  if (const auto imperfection = root.find("imperfection")) {
+    imperfection->expect_object({"shape", "amplitude", "direction"},
+                                "an imperfection object {shape, amplitude, direction}");
+    if (const auto shape = imperfection->find("shape")) {
+      const std::string value = shape->string("imperfection shape");
+      if (value == "bow") {
+        spec.imperfection.shape = model::ImperfectionShape::bow;
+      } else if (value == "buckling_mode") {
+        spec.imperfection.shape = model::ImperfectionShape::buckling_mode;
+      } else {
+        throw shape->error("unknown imperfection shape \"" + value +
+                           "\"; expected bow or buckling_mode");
+      }
+    }
+    if (const auto amplitude = imperfection->find("amplitude")) {
+      const double value = amplitude->number("imperfection amplitude, mm");
+      if (!(value >= 0.0) || value >= spec.total_length()) {
+        throw amplitude->error("imperfection amplitude must be >= 0 and smaller than the brace "
+                               "length " +
+                               std::to_string(spec.total_length()) + " mm (got " +
+                               describe_json_value(amplitude->json()) + ")");
+      }
+      spec.imperfection.amplitude = value;
+    }
+    if (const auto direction = imperfection->find("direction")) {
+      const std::string value = direction->string("imperfection direction");
+      if (value == "y") {
+        spec.imperfection.direction = model::BendingAxis::y;
+      } else if (value == "z") {
+        spec.imperfection.direction = model::BendingAxis::z;
+      } else if (value != "weak") {
+        throw direction->error("unknown direction \"" + value + "\"; expected y, z or weak");
+      }
+    }
+  }
+
+  if (const auto casing = root.find("casing"); casing && !casing->json().is_null()) {
+    throw casing->error("the casing is not modelled yet: give \"casing\": null for a bare core");
+  }
+  return spec;
+}
+
+model::BraceSpec read_brace(const std::filesystem::path& file) {
+  return parse_brace(read_text_file(file), file.string());
+}
+
+} // namespace brb::io
