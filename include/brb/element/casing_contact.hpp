@@ -1,0 +1,79 @@
+// CasingContact: the link between a core node and the casing node at the same station
+// (DESIGN.md section 4, BRB_SOURCE_FACTS sections 3-4). In each transverse direction
+// (section y and z) the core has a clearance `gap` to the casing on both sides; once it
+// closes, the core bears on the mortar: the bearing stress follows the mortar damage law at
+// the strain penetration / bearing_depth, over the bearing area (local crushing softens it,
+// and each of the four faces keeps its own damage). An always-active soft spring models the
+// unbonding layer (it keeps the casing stable while gaps are open). Along the axis, Coulomb
+// friction acts with the total bearing force as normal force.
+//
+// Directions are the initial (global) axes of the brace: the link is geometrically linear,
+// which is exact for the small rotations of the casing relative to the core's axis.
+// DOF: 6 per node (translations used), force on the core = -force on the casing.
+#pragma once
+
+#include "brb/element/element.hpp"
+#include "brb/material/mortar_damage.hpp"
+#include "brb/material/penalty_friction.hpp"
+
+#include <array>
+
+namespace brb::element {
+
+struct CasingContactParameters {
+  Matrix3 axes = Matrix3::Identity(); ///< columns: brace axis, section y, section z (global)
+  double gap_y = 0.0;                 ///< clearance on each side along y (mm), >= 0
+  double gap_z = 0.0;                 ///< clearance on each side along z (mm), >= 0
+  double bearing_area_y = 0.0;        ///< area bearing on a y face (mm^2)
+  double bearing_area_z = 0.0;        ///< area bearing on a z face (mm^2)
+  double bearing_depth = 0.0;         ///< mortar depth turning penetration into strain (mm)
+  material::MortarParameters mortar;  ///< bearing law
+  double layer_stiffness = 0.0;       ///< unbonding layer spring per direction (N/mm), >= 0
+  double friction_coefficient = 0.1;  ///< kappa (source: 0.1)
+  double tangential_stiffness = 0.0;  ///< stick penalty along the axis (N/mm)
+
+  /// Throws ParameterError naming the key (gap_y, gap_z, bearing_area_y, ...).
+  void validate() const;
+};
+
+class CasingContact final : public Element {
+public:
+  /// nodes: {core node, casing node}, coincident in the reference configuration up to the
+  /// initial imperfection (the relative displacement counts from the initial offset).
+  CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
+                const Vector3& casing_position, const CasingContactParameters& parameters);
+
+  std::span<const int> nodes() const override { return nodes_; }
+  bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string& failure) override;
+  void commit() override { committed_ = trial_; }
+  void revert_to_committed() override { trial_ = committed_; }
+  ElementEnergy energy() const override;
+
+  /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N).
+  const Vector3& link_force() const { return link_force_; }
+  /// Largest mortar damage over the four faces (trial state).
+  double max_mortar_damage() const;
+  /// Whether any face is in contact (trial state).
+  bool in_contact() const { return in_contact_; }
+
+private:
+  struct State {
+    std::array<material::MortarState, 4> faces{}; ///< +y, -y, +z, -z
+    material::FrictionState friction;
+    std::array<double, 4> bearing_strain{}; ///< for the free energy
+  };
+
+  std::array<int, 2> nodes_;
+  Vector3 initial_offset_;
+  CasingContactParameters parameters_;
+  material::MortarUniaxial bearing_;
+  material::PenaltyFriction friction_;
+  State committed_;
+  State trial_;
+  Vector3 relative_ = Vector3::Zero(); ///< local relative displacement (axis, y, z)
+  Vector3 link_force_ = Vector3::Zero();
+  bool in_contact_ = false;
+};
+
+} // namespace brb::element

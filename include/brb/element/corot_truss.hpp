@@ -1,0 +1,76 @@
+// CorotTruss: a two-node co-rotational truss with any uniaxial law (value interface:
+// State, evaluate(state, strain) -> {stress, tangent, state}, free_energy, dissipated_energy).
+// Exact for large rotations: the engineering strain eps = (l - L0) / L0 of the current
+// chord, N = A sigma(eps), nodal forces N (-e, e) with e the chord direction, tangent
+//   K = (A E_t / L0) e e^T + (N / l)(I - e e^T)   on (u_i, u_j); rotations carry nothing,
+// so nodes joined only by trusses need their rotations restrained.
+#pragma once
+
+#include "brb/element/element.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace brb::element {
+
+template <class UniaxialLaw> class CorotTruss final : public Element {
+public:
+  /// area A (mm^2); the law's characteristic length should be L0 (one integration point).
+  CorotTruss(std::array<int, 2> nodes, const Vector3& position_i, const Vector3& position_j,
+             double area, UniaxialLaw law)
+      : nodes_(nodes), initial_length_((position_j - position_i).norm()), area_(area),
+        law_(std::move(law)), committed_(law_.initial_state()), trial_(committed_) {}
+
+  std::span<const int> nodes() const override { return nodes_; }
+
+  bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string& failure) override {
+    const Vector3 chord = configuration[1].position - configuration[0].position;
+    const double length = chord.norm();
+    if (!(length > 0.0)) {
+      failure = "co-rotational truss of zero length";
+      return false;
+    }
+    const Vector3 direction = chord / length;
+    strain_ = (length - initial_length_) / initial_length_;
+    const auto response = law_.evaluate(committed_, strain_);
+    trial_ = response.state;
+    axial_force_ = area_ * response.stress;
+    const Matrix3 block =
+        area_ * response.tangent / initial_length_ * direction * direction.transpose() +
+        axial_force_ / length * (Matrix3::Identity() - direction * direction.transpose());
+    force = Eigen::VectorXd::Zero(12);
+    tangent = Eigen::MatrixXd::Zero(12, 12);
+    force.segment<3>(0) = -axial_force_ * direction;
+    force.segment<3>(6) = axial_force_ * direction;
+    tangent.block<3, 3>(0, 0) = block;
+    tangent.block<3, 3>(6, 6) = block;
+    tangent.block<3, 3>(0, 6) = -block;
+    tangent.block<3, 3>(6, 0) = -block;
+    return true;
+  }
+
+  void commit() override { committed_ = trial_; }
+  void revert_to_committed() override { trial_ = committed_; }
+
+  ElementEnergy energy() const override {
+    const double volume = area_ * initial_length_;
+    return {volume * law_.free_energy(trial_, strain_),
+            volume * UniaxialLaw::dissipated_energy(trial_)};
+  }
+
+  double axial_force() const { return axial_force_; }
+  double strain() const { return strain_; }
+
+private:
+  std::array<int, 2> nodes_;
+  double initial_length_;
+  double area_;
+  UniaxialLaw law_;
+  typename UniaxialLaw::State committed_;
+  typename UniaxialLaw::State trial_;
+  double strain_ = 0.0;
+  double axial_force_ = 0.0;
+};
+
+} // namespace brb::element
