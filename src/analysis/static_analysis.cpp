@@ -12,7 +12,8 @@ using element::NodeConfiguration;
 using model::kDofPerNode;
 
 double EnergyBalance::relative_error() const {
-  return std::abs(external_work - stored - dissipated) / std::max(std::abs(external_work), 1e-30);
+  return std::abs(external_work - stored - dissipated - released_in_jumps) /
+         std::max(std::abs(external_work), 1e-30);
 }
 
 StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
@@ -169,16 +170,26 @@ void StaticAnalysis::set_control_value(double value) {
   }
 }
 
-StaticAnalysis::Attempt StaticAnalysis::newton(double control, double regularisation,
+StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
                                                int max_iterations) {
   Attempt attempt;
   bool assembled = false;
   Eigen::VectorXd residual;
+  // With viscosity c > 0 this is one backward-Euler step of the gradient flow
+  // c du/dtau = F_ext - F_int(u) (pseudo-time step 1): the residual gains -c (u - u_start),
+  // the tangent c I. `moved_` holds u - u_start of the free DOF (spins for rotations).
+  moved_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
+  const auto pseudo_residual = [&] {
+    Eigen::VectorXd r = free_residual(control);
+    if (viscosity > 0.0)
+      r -= viscosity * moved_;
+    return r;
+  };
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
     if (!assembled && !assemble(true, attempt.failure))
       return attempt;
     assembled = false;
-    residual = free_residual(control);
+    residual = pseudo_residual();
     // Round-off in the residual is relative to the largest element force, not to the
     // assembled sum (large axial forces cancel at the nodes of a chain), and it has a floor:
     // positions carry a relative error of ~1e-16 of the model's size, which the stiffest
@@ -204,11 +215,9 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double regularisa
       break;
 
     Eigen::SparseMatrix<double> matrix = tangent_;
-    if (regularisation > 0.0) {
-      // shift by a fraction of the mean diagonal (pseudo-transient continuation)
-      const double shift = regularisation * matrix.diagonal().cwiseAbs().mean();
+    if (viscosity > 0.0) {
       for (Eigen::Index k = 0; k < matrix.rows(); ++k)
-        matrix.coeffRef(k, k) += shift;
+        matrix.coeffRef(k, k) += viscosity;
     }
     if (!pattern_analysed_) {
       solver_.analyzePattern(matrix);
@@ -227,14 +236,16 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double regularisa
 
     // Backtracking line search on the residual norm.
     const std::vector<NodeConfiguration> start = trial_;
+    const Eigen::VectorXd start_moved = moved_;
     const double start_norm = residual.norm();
     double step = 1.0;
     for (int search = 0;; ++search) {
       apply_free_increment(increment, step);
+      moved_ = start_moved + step * increment;
       std::string failure;
       const bool ok = assemble(true, failure);
-      const bool accept = ok && (!settings_.line_search || search == 6 ||
-                                 free_residual(control).norm() < start_norm);
+      const bool accept =
+          ok && (!settings_.line_search || search == 6 || pseudo_residual().norm() < start_norm);
       if (accept) {
         assembled = true;
         break;
@@ -279,13 +290,9 @@ void StaticAnalysis::commit(double control) {
   } else {
     control_force_ = reference_load_.dot(internal_force_);
   }
-  energy_.stored = 0.0;
-  energy_.dissipated = 0.0;
-  for (const auto& element : model_.elements()) {
-    const auto energy = element->energy();
-    energy_.stored += energy.stored;
-    energy_.dissipated += energy.dissipated;
-  }
+  const element::ElementEnergy energy = element_energy();
+  energy_.stored = energy.stored;
+  energy_.dissipated = energy.dissipated;
 }
 
 void StaticAnalysis::revert() {
@@ -347,13 +354,18 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     return try_increment(from, middle, depth + 1, report) &&
            try_increment(middle, to, depth + 1, report);
   }
-  // At the floor: regularised Newton, more iterations.
+  // At the floor: pseudo-transient continuation. The static path has no neighbour here (a
+  // limit point: the restrained core jumping to a higher buckling mode, a snap-through);
+  // follow the gradient flow c du/dtau = F_ext - F_int(u) in pseudo-time until it comes to
+  // rest on the next stable branch. The energy the viscosity absorbs on the way is the
+  // energy the jump releases; it is booked separately (EnergyBalance::released_in_jumps).
   report.used_regularised_newton = true;
   ++regularised_steps_;
   set_control_value(to);
-  attempt = newton(to, 1e-3, settings_.fallback_iterations);
+  attempt = pseudo_transient(to);
   report.iterations += attempt.iterations;
   if (attempt.converged) {
+    committed_stable_ = !settings_.require_stable_equilibrium || tangent_is_positive_definite();
     commit(to);
     ++report.substeps;
     return true;
@@ -381,6 +393,58 @@ double StaticAnalysis::displacement(int node, model::Dof dof) const {
   if (dof < model::rx)
     return committed_[node].position[dof] - model_.coordinates(node)[dof];
   return element::vector_from_rotation(committed_[node].rotation)[dof - model::rx];
+}
+
+StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
+  Attempt total;
+  if (!assemble(true, total.failure))
+    return total;
+  // The energy released is what the jump takes out of the system: the drop of stored plus
+  // material-dissipated energy, plus the work the (constant) loads do during it.
+  const element::ElementEnergy before = element_energy();
+  Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
+  const double stiffness = tangent_.diagonal().cwiseAbs().mean();
+  double viscosity = 1e-3 * stiffness;
+  for (int pseudo_step = 0; pseudo_step < settings_.fallback_iterations; ++pseudo_step) {
+    const std::vector<NodeConfiguration> start = trial_;
+    const Attempt attempt = newton(control, viscosity, settings_.max_iterations);
+    total.iterations += attempt.iterations;
+    if (!attempt.converged) {
+      trial_ = start; // a more viscous (shorter) pseudo-time step from the same state
+      viscosity *= 10.0;
+      continue;
+    }
+    travelled += moved_;
+    // at rest when the plain residual is below tolerance (the state is assembled)
+    if (newton(control, 0.0, 0).converged) {
+      total.converged = true;
+      const element::ElementEnergy after = element_energy();
+      double load_work = 0.0;
+      for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
+        const int dof = free_dofs_[e];
+        const double load =
+            constant_load_[dof] + (displacement_control_ ? 0.0 : control * reference_load_[dof]);
+        load_work += load * travelled[static_cast<Eigen::Index>(e)];
+      }
+      energy_.released_in_jumps +=
+          before.stored + before.dissipated + load_work - after.stored - after.dissipated;
+      return total;
+    }
+    viscosity = std::max(0.5 * viscosity, 1e-12 * stiffness);
+  }
+  total.failure = "pseudo-transient continuation did not come to rest in " +
+                  std::to_string(settings_.fallback_iterations) + " pseudo-time steps";
+  return total;
+}
+
+element::ElementEnergy StaticAnalysis::element_energy() const {
+  element::ElementEnergy total;
+  for (const auto& element : model_.elements()) {
+    const auto energy = element->energy();
+    total.stored += energy.stored;
+    total.dissipated += energy.dissipated;
+  }
+  return total;
 }
 
 bool StaticAnalysis::tangent_is_positive_definite() const {

@@ -3,14 +3,16 @@
 //
 // Algorithm per step: tangent predictor, Newton-Raphson with a backtracking line search on
 // the residual; on failure the step is retried in halves down to a floor (1 / 2^max_halvings
-// of the step), and at the floor with a regularised Newton (tangent + shift, i.e.
-// Levenberg-Marquardt / pseudo-transient continuation). Every such fallback is reported.
+// of the step), and at the floor by pseudo-transient continuation (backward-Euler steps of
+// the gradient flow c du/dtau = F_ext - F_int, which passes limit points and comes to rest
+// on the next stable branch). Every such fallback is reported.
 // Nothing is committed until a (sub)step converges, so a failure leaves the last
 // converged state intact.
 //
 // Energy: external work is integrated with the trapezoidal rule over converged steps;
-// elements report stored and dissipated energy, so the balance W = stored + dissipated is
-// a check of the whole solution (exact in the limit of small steps).
+// elements report stored and dissipated energy, and the pseudo-viscosity's absorbed energy
+// is the energy released in jumps, so W = stored + dissipated + released is a check of the
+// whole solution (exact in the limit of small steps).
 #pragma once
 
 #include "brb/element/element.hpp"
@@ -32,7 +34,7 @@ struct NewtonSettings {
   double relative_force_tolerance = 1e-9;
   bool line_search = true;
   int max_halvings = 12;         ///< substep floor: step / 2^max_halvings
-  int fallback_iterations = 200; ///< regularised Newton at the floor
+  int fallback_iterations = 500; ///< pseudo-time steps allowed at the floor
   /// Accept a converged (sub)step only if its tangent is positive definite (a stable
   /// equilibrium under the control); otherwise cut the step. Newton started far from the
   /// path can converge onto an unstable branch (e.g. a bowed column carried straight past
@@ -60,7 +62,10 @@ struct EnergyBalance {
   double external_work = 0.0;
   double stored = 0.0;
   double dissipated = 0.0;
-  /// |W - stored - dissipated| / max(|W|, tiny)
+  /// Energy absorbed by the pseudo-viscosity while the solver passed limit points (the
+  /// energy those jumps release, e.g. a restrained core snapping to a higher mode).
+  double released_in_jumps = 0.0;
+  /// |W - stored - dissipated - released_in_jumps| / max(|W|, tiny)
   double relative_error() const;
 };
 
@@ -117,7 +122,10 @@ private:
   Eigen::VectorXd free_residual(double control) const;
   void apply_free_increment(const Eigen::VectorXd& increment, double scale);
   void set_control_value(double value);
-  Attempt newton(double control, double regularisation, int max_iterations);
+  Attempt newton(double control, double viscosity, int max_iterations);
+  Attempt pseudo_transient(double control);
+  /// Sum of the elements' energies at their last evaluated (trial) state.
+  element::ElementEnergy element_energy() const;
   bool try_increment(double from, double to, int depth, StepReport& report);
   void commit(double control);
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
@@ -153,6 +161,7 @@ private:
   int regularised_steps_ = 0;
   int unstable_accepted_ = 0;
   bool committed_stable_ = true;
+  Eigen::VectorXd moved_; // free-DOF motion since the start of a pseudo-time step
 
   // element buffers
   std::vector<element::NodeConfiguration> element_nodes_;
