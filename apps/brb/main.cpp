@@ -1,5 +1,6 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
+#include "cyclic_command.hpp"
 #include "material_command.hpp"
 
 #include "brb/io/input_error.hpp"
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
 
   brb::cli::MaterialCommand material_command;
   const CLI::App* material = brb::cli::add_material_command(app, material_command);
+  brb::cli::CyclicCommand cyclic_command;
+  const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
 
   try {
     app.parse(argc, argv);
@@ -32,13 +35,15 @@ int main(int argc, char** argv) {
       return app.exit(error); // --help
     }
     std::cerr << "brb: error: " << error.what() << "\n"
-              << "Run 'brb --help' or 'brb material --help' for usage.\n";
+              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic) for usage.\n";
     return kInvalidInput;
   }
 
   try {
     if (material->parsed())
       return brb::cli::run_material_command(material_command, std::cerr);
+    if (cyclic->parsed())
+      return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

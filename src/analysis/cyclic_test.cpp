@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace brb::analysis {
 
@@ -29,8 +31,10 @@ CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const doubl
   for (std::size_t k = 1; k < deformation.size(); ++k) {
     const StepReport report = analysis.step_to(deformation[k]);
     if (!report.converged) {
-      result.stop_reason = "step " + std::to_string(k) + " (deformation " +
-                           std::to_string(deformation[k]) + " mm): " + report.failure;
+      std::ostringstream reason;
+      reason << "step " << k << " (deformation " << std::setprecision(6) << deformation[k]
+             << " mm): " << report.failure;
+      result.stop_reason = reason.str();
       break;
     }
     CyclicStep step{static_cast<int>(k),      cycle[k],  analysis.control_value(),

@@ -4,12 +4,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace brb::analysis {
 
 using element::NodeConfiguration;
 using model::kDofPerNode;
+
+namespace {
+
+/// A number for messages: 6 significant digits.
+std::string readable(double value) {
+  std::ostringstream text;
+  text << std::setprecision(6) << value;
+  return text.str();
+}
+
+} // namespace
 
 double EnergyBalance::relative_error() const {
   return std::abs(external_work - stored - dissipated - released_in_jumps) /
@@ -371,8 +384,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     return true;
   }
   revert();
-  report.failure =
-      "step from " + std::to_string(from) + " to " + std::to_string(to) + ": " + attempt.failure;
+  report.failure = "step from " + readable(from) + " to " + readable(to) + ": " + attempt.failure;
   return false;
 }
 

@@ -102,8 +102,15 @@ SectionSpec read_section(const JsonValue& object) {
     const auto layout = section.mesh(); // the meshers check the geometry (e.g. wall < radius)
     (void)layout;
   } catch (const ParameterError& error) {
-    throw InputError(object.source(), json_pointer_append(object.path(), error.field()),
-                     error.what());
+    // The meshers name fiber counts by meaning; the file has them as "fibers": [a, b].
+    const std::string& field = error.field();
+    std::string path = json_pointer_append(object.path(), field);
+    if (field == "fibers_y" || field == "rings" || field == "fibers_along") {
+      path = json_pointer_append(json_pointer_append(object.path(), "fibers"), "0");
+    } else if (field == "fibers_z" || field == "sectors" || field == "fibers_through") {
+      path = json_pointer_append(json_pointer_append(object.path(), "fibers"), "1");
+    }
+    throw InputError(object.source(), path, field + " " + error.what());
   }
   return section;
 }

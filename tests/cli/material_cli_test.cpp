@@ -1,82 +1,29 @@
 // `brb material` end to end: the real binary (BRB_CLI_PATH) run on temporary files.
+#include "cli/run_brb.hpp"
 #include "io/scratch_directory.hpp"
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace {
 
+using brb::testing::CliRun;
+using brb::testing::lines_of;
+using brb::testing::numbers_of;
 using brb::testing::read_file;
+using brb::testing::run_brb;
 using brb::testing::ScratchDirectory;
-
-std::string shell_quoted(const std::string& text) {
-  std::string quoted = "'";
-  for (const char character : text) {
-    if (character == '\'') {
-      quoted += "'\\''";
-    } else {
-      quoted += character;
-    }
-  }
-  return quoted + "'";
-}
-
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-/// Runs `brb <arguments>`; stdout and stderr are captured in a directory of their own so that
-/// the working directory's listing shows only what brb wrote.
-CliRun run_brb(const std::string& arguments) {
-  const ScratchDirectory logs;
-  const auto out = logs.path() / "stdout";
-  const auto err = logs.path() / "stderr";
-  const std::string command = shell_quoted(BRB_CLI_PATH) + " " + arguments + " >" +
-                              shell_quoted(out.string()) + " 2>" + shell_quoted(err.string()) +
-                              " </dev/null";
-  const int status = std::system(command.c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = read_file(out);
-  run.err = read_file(err);
-  return run;
-}
+using brb::testing::shell_quoted;
 
 std::string material_arguments(const std::string& law, const std::filesystem::path& parameters,
                                const std::filesystem::path& history,
                                const std::filesystem::path& output) {
   return "material --law " + law + " --params " + shell_quoted(parameters.string()) + " --strain " +
          shell_quoted(history.string()) + " --out " + shell_quoted(output.string());
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream stream(text);
-  for (std::string line; std::getline(stream, line);)
-    lines.push_back(line);
-  return lines;
-}
-
-std::vector<double> numbers_of(const std::string& line) {
-  std::vector<double> numbers;
-  std::istringstream stream(line);
-  for (std::string cell; std::getline(stream, cell, ',');) {
-    double value = 0.0;
-    const auto [end, status] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-    EXPECT_TRUE(status == std::errc{} && end == cell.data() + cell.size()) << cell;
-    numbers.push_back(value);
-  }
-  return numbers;
 }
 
 std::string shortest(double value) {

@@ -1,0 +1,304 @@
+#include "cyclic_command.hpp"
+
+#include "brb/analysis/cyclic_test.hpp"
+#include "brb/io/atomic_file.hpp"
+#include "brb/io/brace_input.hpp"
+#include "brb/io/csv.hpp"
+#include "brb/io/input_error.hpp"
+#include "brb/io/json_input.hpp"
+#include "brb/io/material_input.hpp"
+#include "brb/io/protocol.hpp"
+#include "brb/material/parameter_error.hpp"
+#include "brb/model/brace_model.hpp"
+#include "brb/model/brace_spec.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <iomanip>
+#include <ios>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace brb::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+constexpr int kCompleted = 0;
+constexpr int kStoppedEarly = 1;
+
+/// Without --max-step, a protocol that gives no max_step is followed in steps of dy / 10.
+constexpr double kDefaultStepsPerYieldDeformation = 10.0;
+
+constexpr const char* kHysteresisFile = "hysteresis.csv";
+constexpr const char* kSummaryFile = "summary.json";
+
+/// The text summary lists at most this many cycles (the first and the last half of them);
+/// summary.json has them all.
+constexpr std::size_t kMostCyclesListed = 12;
+
+/// The brace's name in the outputs: its "name", or the brace file's name without extension.
+std::string brace_name(const model::BraceSpec& spec, const fs::path& file) {
+  return spec.name.empty() ? file.stem().string() : spec.name;
+}
+
+/// The brace's finite element model. A ParameterError (inconsistent geometry, named by its key
+/// in the brace schema, e.g. "core/yielding_length") becomes an InputError at that JSON path
+/// of `file` ("/core/yielding_length"), with the value found there.
+model::BraceModel build_brace(const model::BraceSpec& spec, const fs::path& file) {
+  try {
+    return model::build_brace_model(spec);
+  } catch (const ParameterError& error) {
+    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
+  }
+}
+
+/// `--out` must name a directory that exists or can be created because its parent exists.
+/// Checked before the analysis, so that a path that cannot receive the results is an input
+/// error and nothing is written.
+void check_output_directory(const fs::path& directory) {
+  const std::string name = directory.string();
+  if (directory.empty())
+    throw io::InputError("--out", "", "must name a directory");
+  if (fs::exists(directory)) {
+    if (!fs::is_directory(directory))
+      throw io::InputError(name, "", "--out must name a directory, and this is not one");
+    return;
+  }
+  // "out/" names the directory "out": drop the trailing separator before taking the parent.
+  const fs::path target = directory.has_filename() ? directory : directory.parent_path();
+  const fs::path parent = target.parent_path();
+  if (!parent.empty() && !fs::is_directory(parent)) {
+    throw io::InputError(name, "",
+                         "cannot create the output directory: its parent '" + parent.string() +
+                             "' does not exist");
+  }
+}
+
+/// Analysis steps that converged (the initial, unloaded state is not a step).
+int converged_steps(const analysis::CyclicTestResult& result) {
+  return result.steps.empty() ? 0 : static_cast<int>(result.steps.size()) - 1;
+}
+
+io::NumericTable hysteresis_table(const analysis::CyclicTestResult& result) {
+  io::NumericTable table(
+      {"step", "cycle", "deformation", "force", "max_lateral_displacement", "substeps"});
+  for (const analysis::CyclicStep& step : result.steps) {
+    table.append_row(std::array{static_cast<double>(step.step), static_cast<double>(step.cycle),
+                                step.deformation, step.force, step.max_lateral_displacement,
+                                static_cast<double>(step.substeps)});
+  }
+  return table;
+}
+
+Json summary_json(const std::string& name, const model::BraceModel& brace,
+                  const analysis::CyclicTestResult& result) {
+  Json cycles = Json::array();
+  for (const analysis::CycleMetrics& cycle : result.cycles) {
+    cycles.push_back(Json{{"index", cycle.index},
+                          {"amplitude", cycle.amplitude},
+                          {"energy", cycle.energy},
+                          {"max_tension", cycle.max_tension},
+                          {"max_compression", cycle.max_compression}});
+  }
+  const analysis::EnergyBalance& balance = result.energy_balance;
+  Json summary = Json::object();
+  summary["brace"] = name;
+  summary["yield_deformation"] = brace.yield_deformation;
+  summary["yield_force"] = brace.yield_force;
+  summary["max_tension"] = result.max_tension;
+  summary["max_compression"] = result.max_compression;
+  summary["energy_total"] = result.energy_total;
+  summary["cycles"] = std::move(cycles);
+  summary["completed"] = result.completed;
+  summary["stop_reason"] = result.completed ? Json(nullptr) : Json(result.stop_reason);
+  summary["solver"] = Json{{"steps", converged_steps(result)},
+                           {"iterations", result.iterations},
+                           {"substeps", result.substeps},
+                           {"regularised_steps", result.regularised_steps},
+                           {"unstable_accepted", result.unstable_accepted}};
+  summary["energy_balance"] = Json{{"external_work", balance.external_work},
+                                   {"stored", balance.stored},
+                                   {"dissipated", balance.dissipated},
+                                   {"released_in_jumps", balance.released_in_jumps},
+                                   {"relative_error", balance.relative_error()}};
+  summary["units"] = Json{{"force", "N"}, {"length", "mm"}};
+  return summary;
+}
+
+/// "1 cycle", "3 cycles".
+std::string count_of(std::size_t count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+std::string count_of(int count, const std::string& noun) {
+  return count_of(static_cast<std::size_t>(count < 0 ? 0 : count), noun);
+}
+
+/// `value` with `digits` significant digits.
+std::string significant(double value, int digits) {
+  std::ostringstream text;
+  text << std::setprecision(digits) << value;
+  return text.str();
+}
+
+/// `value` with `decimals` digits after the point.
+std::string with_decimals(double value, int decimals) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(decimals) << value;
+  return text.str();
+}
+
+void print_cycle_table(std::ostream& out, const std::vector<analysis::CycleMetrics>& cycles,
+                       double yield_deformation) {
+  out << "  cycle  amplitude (mm)  amplitude (dy)   energy (N mm)  max tension (N)"
+         "  max compression (N)\n";
+  const auto print_row = [&](const analysis::CycleMetrics& cycle) {
+    out << std::setw(7) << cycle.index << std::setw(16) << significant(cycle.amplitude, 6)
+        << std::setw(16) << with_decimals(cycle.amplitude / yield_deformation, 3) << std::setw(16)
+        << significant(cycle.energy, 6) << std::setw(17) << significant(cycle.max_tension, 6)
+        << std::setw(21) << significant(cycle.max_compression, 6) << "\n";
+  };
+  const std::size_t listed_each_end = kMostCyclesListed / 2;
+  for (std::size_t index = 0; index < cycles.size(); ++index) {
+    const bool elided = cycles.size() > kMostCyclesListed && index >= listed_each_end &&
+                        index < cycles.size() - listed_each_end;
+    if (!elided) {
+      print_row(cycles[index]);
+    } else if (index == listed_each_end) {
+      out << "    ... " << cycles.size() - 2 * listed_each_end
+          << " more cycles in summary.json ...\n";
+    }
+  }
+}
+
+struct OutputFiles {
+  fs::path hysteresis;
+  fs::path summary;
+};
+
+void print_report(std::ostream& out, const CyclicCommand& command, const std::string& name,
+                  const model::BraceModel& brace, const io::LoadingProtocol& protocol,
+                  const analysis::CyclicTestResult& result, const OutputFiles& files) {
+  const double dy = brace.yield_deformation;
+  const std::size_t planned_steps = protocol.deformation.size() - 1;
+  out << "brb cyclic: brace " << name << " (" << command.brace.string() << ")\n"
+      << "  yield deformation dy = " << significant(dy, 6)
+      << " mm, yield force Py = " << significant(brace.yield_force, 6) << " N\n"
+      << "  protocol " << protocol.name << ": " << count_of(protocol.cycle_count(), "cycle") << ", "
+      << count_of(planned_steps, "step") << "\n\n";
+  if (result.cycles.empty()) {
+    out << "  no cycle was completed\n";
+  } else {
+    print_cycle_table(out, result.cycles, dy);
+  }
+  out << "\n";
+  if (result.completed) {
+    out << "  completed: all " << planned_steps << " steps\n";
+  } else {
+    out << "  stopped early after " << converged_steps(result) << " of " << planned_steps
+        << " steps: " << result.stop_reason << "\n";
+  }
+  out << "  peak forces: tension " << significant(result.max_tension, 6) << " N, compression "
+      << significant(result.max_compression, 6) << " N; work of the force over the history "
+      << significant(result.energy_total, 6) << " N mm\n"
+      << "  solver: " << count_of(converged_steps(result), "step") << ", "
+      << count_of(result.iterations, "Newton iteration") << ", "
+      << count_of(result.substeps, "substep") << ", "
+      << count_of(result.regularised_steps, "regularised step") << ", "
+      << count_of(result.unstable_accepted, "unstable substep") << " accepted\n";
+  const analysis::EnergyBalance& balance = result.energy_balance;
+  out << "  energy balance: external work " << significant(balance.external_work, 6)
+      << " N mm, stored " << significant(balance.stored, 6) << ", dissipated "
+      << significant(balance.dissipated, 6) << ", released in jumps "
+      << significant(balance.released_in_jumps, 6) << ", relative error "
+      << significant(balance.relative_error(), 3) << "\n"
+      << "  wrote " << files.hysteresis.string() << "\n"
+      << "        " << files.summary.string() << "\n";
+}
+
+} // namespace
+
+CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
+  auto* cyclic = app.add_subcommand(
+      "cyclic", "Virtual cyclic test: drive a brace's axial deformation through a loading "
+                "protocol and write its hysteresis and a summary.");
+  cyclic
+      ->add_option("brace", command.brace,
+                   "Brace file, JSON (comments allowed); schema in the README, \"Brace files\"")
+      ->type_name("BRACE.json")
+      ->required();
+  cyclic
+      ->add_option("--protocol", command.protocol,
+                   "Loading protocol: a protocol file (.json: cycles in mm or dy, or a built-in "
+                   "girona / ucsd) or a deformation history (.csv, column 'deformation', mm)")
+      ->type_name("P.json|P.csv")
+      ->required();
+  cyclic
+      ->add_option("--out", command.output_directory,
+                   "Output directory (created if missing; its parent must exist): "
+                   "hysteresis.csv and summary.json")
+      ->type_name("DIR")
+      ->required();
+  cyclic
+      ->add_option_function<double>(
+          "--max-step",
+          [&command](const double& max_step) {
+            if (!(std::isfinite(max_step) && max_step > 0.0))
+              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
+            command.max_step = max_step;
+          },
+          "Largest change of deformation per step, mm, when the protocol gives no max_step "
+          "(always for .csv histories); default dy / 10")
+      ->type_name("MM");
+  cyclic->footer(
+      "Outputs (README, \"brb cyclic\"):\n"
+      "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
+      "    (mm, N; tension and elongation positive)\n"
+      "  summary.json: yield force and deformation, peak forces, energy per cycle, solver\n"
+      "    statistics, energy balance\n"
+      "Units: N, mm, MPa. Exit status: 0 completed, 1 the analysis stopped early (what was\n"
+      "computed is written) or the run failed, 2 invalid input or usage (nothing written).");
+  return cyclic;
+}
+
+int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::ostream& notes) {
+  // Every input is read and checked before anything is written.
+  const model::BraceSpec spec = io::read_brace(command.brace);
+  const std::string name = brace_name(spec, command.brace);
+  model::BraceModel brace = build_brace(spec, command.brace);
+  const double default_max_step =
+      command.max_step.value_or(brace.yield_deformation / kDefaultStepsPerYieldDeformation);
+  const io::LoadingProtocol protocol =
+      io::read_protocol(command.protocol, brace.yield_deformation, default_max_step);
+  check_output_directory(command.output_directory);
+
+  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
+      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+
+  // Written also when the analysis stopped early: what was computed is a result too.
+  const OutputFiles files{command.output_directory / kHysteresisFile,
+                          command.output_directory / kSummaryFile};
+  fs::create_directory(command.output_directory);
+  io::write_file_atomically(files.hysteresis, hysteresis_table(result).text());
+  io::write_file_atomically(files.summary, summary_json(name, brace, result).dump(2) + "\n");
+
+  print_report(report, command, name, brace, protocol, result, files);
+  if (!result.completed) {
+    notes << "brb: error: " << command.protocol.string()
+          << ": the cyclic test stopped early: " << result.stop_reason
+          << "; the steps computed before are in " << files.hysteresis.string() << " and "
+          << files.summary.string() << "\n";
+    return kStoppedEarly;
+  }
+  return kCompleted;
+}
+
+} // namespace brb::cli

@@ -1,0 +1,29 @@
+// `brb cyclic`: a virtual cyclic test of a brace under a loading protocol (README: "brb cyclic").
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <ostream>
+
+namespace brb::cli {
+
+struct CyclicCommand {
+  std::filesystem::path brace;            ///< BRACE.json (README: "Brace files")
+  std::filesystem::path protocol;         ///< P.json or P.csv (README: "Loading protocols")
+  std::filesystem::path output_directory; ///< receives hysteresis.csv and summary.json
+  /// mm: the largest deformation change per step when the protocol gives none (default dy / 10).
+  std::optional<double> max_step;
+};
+
+/// Registers the sub-command and its options (stored into `command` when parsed).
+CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command);
+
+/// Runs it: reads and checks every input (InputError on a bad one) before anything is written,
+/// runs the test, writes DIR/hysteresis.csv and DIR/summary.json atomically (also when the
+/// analysis stopped early), prints the text summary on `report` and, when the analysis stopped
+/// early, the reason on `notes`. Returns the exit status: 0 completed, 1 stopped early.
+int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::ostream& notes);
+
+} // namespace brb::cli

@@ -1,0 +1,511 @@
+// `brb cyclic` end to end: the real binary (BRB_CLI_PATH) run on temporary files. The brace is
+// a short, stocky plate core (a few elements) so that each run takes a fraction of a second.
+#include "cli/run_brb.hpp"
+#include "io/scratch_directory.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+using brb::testing::CliRun;
+using brb::testing::lines_of;
+using brb::testing::numbers_of;
+using brb::testing::read_file;
+using brb::testing::run_brb;
+using brb::testing::ScratchDirectory;
+using brb::testing::shell_quoted;
+using nlohmann::json;
+
+namespace fs = std::filesystem;
+
+// The test brace: a 12 x 10 mm plate, 100 mm long, fixed ends, S275 with the linear kinematic
+// hardening of the Girona steel. Stocky enough (L / r = 35, effective length L / 2) not to
+// buckle at 2 dy even at the hardening tangent.
+constexpr double kYoungsModulus = 210000.0;     // MPa
+constexpr double kYieldStress = 275.0;          // MPa
+constexpr double kKinematicHardening = 21000.0; // MPa
+constexpr double kPlateWidth = 12.0;            // mm
+constexpr double kPlateDepth = 10.0;            // mm
+constexpr double kCoreLength = 100.0;           // mm
+
+/// The test brace; with `straight`, without the default bow imperfection (L / 1000).
+json test_brace(bool straight = false) {
+  json brace = {{"name", "stocky plate"},
+                {"units", "mm"},
+                {"core",
+                 {{"section",
+                   {{"shape", "rectangle"},
+                    {"width", kPlateWidth},
+                    {"depth", kPlateDepth},
+                    {"fibers", {4, 4}}}},
+                  {"steel",
+                   {{"E", kYoungsModulus},
+                    {"nu", 0.3},
+                    {"fy", kYieldStress},
+                    {"H_kin", kKinematicHardening},
+                    {"H_iso", 0.0}}},
+                  {"yielding_length", kCoreLength},
+                  {"elements", 4}}},
+                {"ends", "fixed"},
+                {"casing", nullptr}};
+  if (straight)
+    brace["imperfection"] = {{"amplitude", 0.0}};
+  return brace;
+}
+
+/// Axial force of a straight bar of the test brace at each deformation of a history: uniform
+/// strain delta / L through the closed-form uniaxial law of linear kinematic hardening
+/// (elastic predictor, radial return onto |sigma - alpha| = fy, d(alpha) = H d(eps_p)).
+std::vector<double> uniaxial_bar_forces(const std::vector<double>& deformations) {
+  std::vector<double> forces;
+  double plastic_strain = 0.0;
+  double back_stress = 0.0;
+  for (const double deformation : deformations) {
+    const double strain = deformation / kCoreLength;
+    double stress = kYoungsModulus * (strain - plastic_strain);
+    const double overstress = std::abs(stress - back_stress) - kYieldStress;
+    if (overstress > 0.0) {
+      const double direction = stress > back_stress ? 1.0 : -1.0;
+      const double plastic_increment = overstress / (kYoungsModulus + kKinematicHardening);
+      plastic_strain += direction * plastic_increment;
+      back_stress += direction * kKinematicHardening * plastic_increment;
+      stress = kYoungsModulus * (strain - plastic_strain);
+    }
+    forces.push_back(stress * kPlateWidth * kPlateDepth);
+  }
+  return forces;
+}
+
+/// Core only, no end zones: Py = fy A and dy = Py L / (E A) = fy L / E.
+constexpr double kYieldForce = kYieldStress * kPlateWidth * kPlateDepth;
+constexpr double kYieldDeformation = kYieldStress / kYoungsModulus * kCoreLength;
+
+/// One cycle at 1 dy, then one at 2 dy, in steps of a quarter dy.
+constexpr double kStepInDy = 0.25;
+const std::vector<double> kAmplitudesInDy{1.0, 2.0};
+
+json two_cycle_protocol() {
+  json cycles = json::array();
+  for (const double amplitude : kAmplitudesInDy)
+    cycles.push_back({{"amplitude", amplitude}, {"cycles", 1}});
+  return {{"units", "dy"}, {"cycles", cycles}, {"max_step", kStepInDy}};
+}
+
+const std::string kHysteresisHeader =
+    "step,cycle,deformation,force,max_lateral_displacement,substeps";
+
+std::string cyclic_arguments(const fs::path& brace, const fs::path& protocol,
+                             const fs::path& output, const std::string& options = "") {
+  return "cyclic " + shell_quoted(brace.string()) + " --protocol " +
+         shell_quoted(protocol.string()) + " --out " + shell_quoted(output.string()) +
+         (options.empty() ? "" : " " + options);
+}
+
+struct HysteresisRow {
+  int step = 0;
+  int cycle = 0;
+  double deformation = 0.0;
+  double force = 0.0;
+  double max_lateral_displacement = 0.0;
+  int substeps = 0;
+};
+
+/// The data rows of hysteresis.csv; the header must be exactly kHysteresisHeader.
+std::vector<HysteresisRow> read_hysteresis(const fs::path& file) {
+  const auto lines = lines_of(read_file(file));
+  EXPECT_FALSE(lines.empty());
+  if (lines.empty())
+    return {};
+  EXPECT_EQ(lines.front(), kHysteresisHeader);
+  std::vector<HysteresisRow> rows;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto numbers = numbers_of(lines[i]);
+    EXPECT_EQ(numbers.size(), 6u) << lines[i];
+    if (numbers.size() != 6u)
+      continue;
+    rows.push_back({static_cast<int>(numbers[0]), static_cast<int>(numbers[1]), numbers[2],
+                    numbers[3], numbers[4], static_cast<int>(numbers[5])});
+    EXPECT_EQ(rows.back().step, numbers[0]) << "step is not a whole number: " << lines[i];
+    EXPECT_EQ(rows.back().cycle, numbers[1]) << "cycle is not a whole number: " << lines[i];
+  }
+  return rows;
+}
+
+/// Work of the force over the increments into the rows accepted by `counts` (trapezoidal).
+template <class Counts> double work_of(const std::vector<HysteresisRow>& rows, Counts counts) {
+  double work = 0.0;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    if (counts(rows[i])) {
+      work += 0.5 * (rows[i].force + rows[i - 1].force) *
+              (rows[i].deformation - rows[i - 1].deformation);
+    }
+  }
+  return work;
+}
+
+std::set<std::string> keys_of(const json& object) {
+  std::set<std::string> keys;
+  for (const auto& item : object.items())
+    keys.insert(item.key());
+  return keys;
+}
+
+TEST(CyclicCli, HelpNamesEveryOption) {
+  const CliRun top = run_brb("--help");
+  EXPECT_EQ(top.exit_code, 0) << top.err;
+  EXPECT_NE(top.out.find("cyclic"), std::string::npos) << top.out;
+
+  const CliRun cyclic = run_brb("cyclic --help");
+  EXPECT_EQ(cyclic.exit_code, 0) << cyclic.err;
+  for (const char* word : {"--protocol", "--out", "--max-step", "hysteresis.csv", "summary.json"})
+    EXPECT_NE(cyclic.out.find(word), std::string::npos) << word << " not in:\n" << cyclic.out;
+}
+
+TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace(/*straight=*/true).dump(2));
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump(2));
+  const auto output = scratch.path() / "results"; // does not exist yet
+
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const std::set<std::string> written{"hysteresis.csv", "summary.json"};
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(output))
+    found.insert(entry.path().filename().string());
+  EXPECT_EQ(found, written); // and no temporary file left
+
+  // ---- hysteresis.csv ----
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  // 0 -> A -> -A -> 0 is 4 A of travel: 4 A / step points per cycle, plus the initial point.
+  std::size_t expected_rows = 1;
+  for (const double amplitude : kAmplitudesInDy)
+    expected_rows += static_cast<std::size_t>(std::lround(4.0 * amplitude / kStepInDy));
+  ASSERT_EQ(rows.size(), expected_rows);
+  EXPECT_EQ(rows.front().step, 0);
+  EXPECT_EQ(rows.front().cycle, 0);
+  EXPECT_EQ(rows.front().deformation, 0.0);
+  EXPECT_EQ(rows.front().force, 0.0);
+  EXPECT_EQ(rows.back().deformation, 0.0);
+  const double step_limit = kStepInDy * kYieldDeformation * (1.0 + 1e-9);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].step, static_cast<int>(i));
+    EXPECT_TRUE(rows[i].cycle == rows[i - 1].cycle || rows[i].cycle == rows[i - 1].cycle + 1)
+        << "row " << i;
+    EXPECT_LE(std::abs(rows[i].deformation - rows[i - 1].deformation), step_limit) << "row " << i;
+    EXPECT_GE(rows[i].substeps, 1) << "row " << i;
+    EXPECT_GE(rows[i].max_lateral_displacement, 0.0) << "row " << i;
+  }
+  for (std::size_t cycle = 1; cycle <= kAmplitudesInDy.size(); ++cycle) {
+    double largest = 0.0;
+    double smallest = 0.0;
+    for (const HysteresisRow& row : rows) {
+      if (row.cycle == static_cast<int>(cycle)) {
+        largest = std::max(largest, row.deformation);
+        smallest = std::min(smallest, row.deformation);
+      }
+    }
+    const double amplitude = kAmplitudesInDy[cycle - 1] * kYieldDeformation;
+    EXPECT_NEAR(largest, amplitude, 1e-12 * amplitude) << "cycle " << cycle;
+    EXPECT_NEAR(smallest, -amplitude, 1e-12 * amplitude) << "cycle " << cycle;
+  }
+
+  // ---- summary.json ----
+  const json summary = json::parse(read_file(output / "summary.json"));
+  EXPECT_EQ(keys_of(summary),
+            (std::set<std::string>{"brace", "yield_deformation", "yield_force", "max_tension",
+                                   "max_compression", "energy_total", "cycles", "completed",
+                                   "stop_reason", "solver", "energy_balance", "units"}));
+  EXPECT_EQ(summary.at("brace"), "stocky plate");
+  EXPECT_NEAR(summary.at("yield_force").get<double>(), kYieldForce, 1e-9 * kYieldForce);
+  EXPECT_NEAR(summary.at("yield_deformation").get<double>(), kYieldDeformation,
+              1e-12 * kYieldDeformation);
+  EXPECT_EQ(summary.at("units"), (json{{"force", "N"}, {"length", "mm"}}));
+  EXPECT_EQ(summary.at("completed"), true);
+  EXPECT_TRUE(summary.at("stop_reason").is_null());
+
+  // The summary's peaks and energies are those of the hysteresis it came with.
+  const auto by_force = [](const HysteresisRow& a, const HysteresisRow& b) {
+    return a.force < b.force;
+  };
+  const double max_tension = std::max_element(rows.begin(), rows.end(), by_force)->force;
+  const double max_compression = std::min_element(rows.begin(), rows.end(), by_force)->force;
+  EXPECT_EQ(summary.at("max_tension").get<double>(), max_tension);
+  EXPECT_EQ(summary.at("max_compression").get<double>(), max_compression);
+  const double total_work = work_of(rows, [](const HysteresisRow&) { return true; });
+  EXPECT_NEAR(summary.at("energy_total").get<double>(), total_work, 1e-9 * std::abs(total_work));
+
+  // Beyond dy the core yields both ways and hardens: the peaks pass Py.
+  EXPECT_GT(max_tension, kYieldForce);
+  EXPECT_LT(max_compression, -kYieldForce);
+
+  const json& cycles = summary.at("cycles");
+  ASSERT_TRUE(cycles.is_array());
+  ASSERT_EQ(cycles.size(), kAmplitudesInDy.size());
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    const json& cycle = cycles[k];
+    const int index = static_cast<int>(k) + 1;
+    SCOPED_TRACE("cycle " + std::to_string(index));
+    EXPECT_EQ(keys_of(cycle), (std::set<std::string>{"index", "amplitude", "energy", "max_tension",
+                                                     "max_compression"}));
+    EXPECT_EQ(cycle.at("index"), index);
+    const double amplitude = kAmplitudesInDy[k] * kYieldDeformation;
+    EXPECT_NEAR(cycle.at("amplitude").get<double>(), amplitude, 1e-12 * amplitude);
+    const auto in_cycle = [index](const HysteresisRow& row) { return row.cycle == index; };
+    const double work = work_of(rows, in_cycle);
+    EXPECT_NEAR(cycle.at("energy").get<double>(), work, 1e-9 * kYieldForce * kYieldDeformation);
+    double tension = 0.0;
+    double compression = 0.0;
+    for (const HysteresisRow& row : rows) {
+      if (in_cycle(row)) {
+        tension = std::max(tension, row.force);
+        compression = std::min(compression, row.force);
+      }
+    }
+    EXPECT_EQ(cycle.at("max_tension").get<double>(), tension);
+    EXPECT_EQ(cycle.at("max_compression").get<double>(), compression);
+  }
+  // The straight bar under uniform strain is the uniaxial law: force and loop energies.
+  std::vector<double> deformations;
+  for (const HysteresisRow& row : rows)
+    deformations.push_back(row.deformation);
+  const std::vector<double> bar_forces = uniaxial_bar_forces(deformations);
+  std::vector<HysteresisRow> bar = rows;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_NEAR(rows[i].force, bar_forces[i], 1e-6 * kYieldForce) << "row " << i;
+    EXPECT_EQ(rows[i].max_lateral_displacement, 0.0) << "row " << i;
+    bar[i].force = bar_forces[i];
+  }
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    const int index = static_cast<int>(k) + 1;
+    const double bar_loop =
+        work_of(bar, [index](const HysteresisRow& row) { return row.cycle == index; });
+    EXPECT_NEAR(cycles[k].at("energy").get<double>(), bar_loop,
+                1e-6 * kYieldForce * kYieldDeformation)
+        << "cycle " << index;
+  }
+  // The cycle at 2 dy yields both ways; the one at 1 dy just reaches yield.
+  EXPECT_GT(cycles[1].at("energy").get<double>(), cycles[0].at("energy").get<double>());
+
+  const json& solver = summary.at("solver");
+  EXPECT_EQ(keys_of(solver), (std::set<std::string>{"steps", "iterations", "substeps",
+                                                    "regularised_steps", "unstable_accepted"}));
+  EXPECT_EQ(solver.at("steps"), rows.size() - 1);
+  EXPECT_GE(solver.at("substeps").get<int>(), solver.at("steps").get<int>());
+  // (A straight uniform bar is in equilibrium after the predictor: no iteration is needed.)
+  EXPECT_GE(solver.at("iterations").get<int>(), 0);
+  EXPECT_GE(solver.at("regularised_steps").get<int>(), 0);
+  EXPECT_GE(solver.at("unstable_accepted").get<int>(), 0);
+
+  const json& balance = summary.at("energy_balance");
+  EXPECT_EQ(keys_of(balance),
+            (std::set<std::string>{"external_work", "stored", "dissipated", "relative_error"}));
+  const double external_work = balance.at("external_work").get<double>();
+  const double stored = balance.at("stored").get<double>();
+  const double dissipated = balance.at("dissipated").get<double>();
+  const double relative_error = balance.at("relative_error").get<double>();
+  EXPECT_NEAR(relative_error, std::abs(external_work - stored - dissipated) / external_work, 1e-9);
+  EXPECT_LT(relative_error, 1e-2); // a stable, converged solution balances its energy
+  EXPECT_GT(dissipated, 0.0);
+
+  // ---- the text summary ----
+  for (const std::string& expected :
+       {std::string("stocky plate"), (output / "hysteresis.csv").string(),
+        (output / "summary.json").string(), std::string("completed")}) {
+    EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " not in:\n" << run.out;
+  }
+}
+
+TEST(CyclicCli, CsvHistoryIsCutIntoStepsOfMaxStepAndReplacesPreviousResults) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto history = scratch.write("history.csv", "time,deformation\n1,0.2\n2,-0.2\n3,0\n");
+  const auto output = scratch.path() / "results";
+  fs::create_directory(output);
+  const auto previous = scratch.write("results/summary.json", "previous results\n");
+  constexpr double kMaxStep = 0.05; // mm
+
+  const CliRun run =
+      run_brb(cyclic_arguments(brace, history, output, "--max-step " + std::to_string(kMaxStep)));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(read_file(previous), "previous results\n");
+
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  // 0 -> 0.2 -> -0.2 -> 0 is 0.8 mm of travel.
+  ASSERT_EQ(rows.size(), 1u + static_cast<std::size_t>(std::lround(0.8 / kMaxStep)));
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_LE(std::abs(rows[i].deformation - rows[i - 1].deformation), kMaxStep * (1.0 + 1e-9));
+    EXPECT_EQ(rows[i].cycle, 1);
+  }
+  // The default bow (L / 1000) bends as the axial force changes.
+  EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [](const HysteresisRow& row) {
+    return row.max_lateral_displacement > 0.0;
+  }));
+  const json summary = json::parse(read_file(output / "summary.json"));
+  ASSERT_EQ(summary.at("cycles").size(), 1u);
+  EXPECT_EQ(summary.at("cycles")[0].at("amplitude").get<double>(), 0.2); // peak |deformation|
+}
+
+TEST(CyclicCli, StoppedAnalysisWritesWhatWasComputedAndExitsWithOne) {
+  // A jump to 1e300 mm cannot be followed by any substepping (as in the `brb material` test):
+  // the first step is computed, the second is not.
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto history = scratch.write("history.csv", "deformation\n0.1\n1e300\n");
+  const auto output = scratch.path() / "results";
+
+  const CliRun run = run_brb(cyclic_arguments(brace, history, output, "--max-step 1e300"));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.err.rfind("brb: error: " + history.string() + ": ", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find("stopped early"), std::string::npos) << run.err;
+
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows.back().deformation, 0.1);
+  const json summary = json::parse(read_file(output / "summary.json"));
+  EXPECT_EQ(summary.at("completed"), false);
+  ASSERT_TRUE(summary.at("stop_reason").is_string());
+  EXPECT_FALSE(summary.at("stop_reason").get<std::string>().empty());
+  EXPECT_NE(run.out.find(summary.at("stop_reason").get<std::string>()), std::string::npos)
+      << run.out;
+  EXPECT_EQ(summary.at("solver").at("steps"), 1);
+}
+
+// ---- Rejected inputs: exit 2, the message names the file and the JSON path, nothing written ----
+
+struct BadRun {
+  std::string name;
+  json brace;
+  std::string protocol;      ///< file contents
+  std::string protocol_file; ///< its name (the extension chooses the reader)
+  std::string file;          ///< the file the message must name: "brace" or "protocol"
+  std::string where;         ///< the JSON path or CSV place the message must name
+};
+
+void PrintTo(const BadRun& bad, std::ostream* out) {
+  *out << bad.name;
+}
+
+json brace_with(const json::json_pointer& pointer, const json& value) {
+  json brace = test_brace();
+  brace[pointer] = value;
+  return brace;
+}
+
+const std::string kGoodProtocol = two_cycle_protocol().dump();
+
+class CyclicRejected : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(CyclicRejected, ExitsWithTwoNamesFileAndFieldAndWritesNothing) {
+  const BadRun& bad = GetParam();
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", bad.brace.dump());
+  const auto protocol = scratch.write(bad.protocol_file, bad.protocol);
+  const auto output = scratch.path() / "results";
+
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  const std::string named = (bad.file == "brace" ? brace : protocol).string();
+  EXPECT_EQ(run.err.rfind("brb: error: " + named + ": " + bad.where, 0), 0u) << run.err;
+  EXPECT_FALSE(fs::exists(output));
+  EXPECT_EQ(scratch.entries().size(), 2u); // only the inputs
+  EXPECT_EQ(run.out, "");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachKind, CyclicRejected,
+    ::testing::Values(
+        BadRun{"negative_length", brace_with(json::json_pointer("/core/yielding_length"), -100.0),
+               kGoodProtocol, "protocol.json", "brace", "/core/yielding_length: "},
+        BadRun{"zero_area", brace_with(json::json_pointer("/core/section/width"), 0.0),
+               kGoodProtocol, "protocol.json", "brace", "/core/section/width: "},
+        BadRun{"imperfection_longer_than_brace",
+               brace_with(json::json_pointer("/imperfection"), {{"amplitude", 2.0 * kCoreLength}}),
+               kGoodProtocol, "protocol.json", "brace", "/imperfection/amplitude: "},
+        BadRun{"unknown_brace_key", brace_with(json::json_pointer("/colour"), "red"), kGoodProtocol,
+               "protocol.json", "brace", "/colour: "},
+        BadRun{"unknown_nested_brace_key", brace_with(json::json_pointer("/core/steel/Fy"), 275.0),
+               kGoodProtocol, "protocol.json", "brace", "/core/steel/Fy: "},
+        BadRun{"casing_given", brace_with(json::json_pointer("/casing"), {{"tube", 100}}),
+               kGoodProtocol, "protocol.json", "brace", "/casing: "},
+        BadRun{"protocol_with_no_cycles", test_brace(), R"({"units": "dy", "cycles": []})",
+               "protocol.json", "protocol", "/cycles: "},
+        BadRun{"unknown_protocol_key", test_brace(),
+               R"({"units": "dy", "cycles": [{"amplitude": 1, "cycles": 1}], "step": 0.1})",
+               "protocol.json", "protocol", "/step: "},
+        BadRun{"unknown_nested_protocol_key", test_brace(),
+               R"({"units": "dy", "cycles": [{"amplitude": 1, "cycles": 1, "repeat": 2}]})",
+               "protocol.json", "protocol", "/cycles/0/repeat: "},
+        BadRun{"unitless_amplitudes", test_brace(),
+               R"({"cycles": [{"amplitude": 1, "cycles": 1}]})", "protocol.json", "protocol",
+               "/units: "},
+        BadRun{"history_without_deformation", test_brace(), "strain\n0.001\n", "history.csv",
+               "protocol", "line 1"}),
+    [](const ::testing::TestParamInfo<BadRun>& info) { return info.param.name; });
+
+TEST(CyclicCli, OutputDirectoryWhoseParentIsMissingIsAnInputError) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", kGoodProtocol);
+  const auto output = scratch.path() / "missing" / "results";
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("brb: error: " + output.string() + ": ", 0), 0u) << run.err;
+  EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
+TEST(CyclicCli, OutputPathThatIsAFileIsAnInputError) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", kGoodProtocol);
+  const auto output = scratch.write("results", "a file\n");
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(run.err.rfind("brb: error: " + output.string() + ": ", 0), 0u) << run.err;
+  EXPECT_EQ(read_file(output), "a file\n");
+  EXPECT_EQ(scratch.entries().size(), 3u);
+}
+
+TEST(CyclicCli, MaxStepMustBeAPositiveNumber) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", kGoodProtocol);
+  const auto output = scratch.path() / "results";
+  for (const char* value : {"0", "-0.1", "abc", "inf"}) {
+    const CliRun run =
+        run_brb(cyclic_arguments(brace, protocol, output, std::string("--max-step=") + value));
+    EXPECT_EQ(run.exit_code, 2) << value << ": " << run.err;
+    EXPECT_NE(run.err.find("--max-step"), std::string::npos) << run.err;
+  }
+  EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
+TEST(CyclicCli, MissingArgumentsAndFilesAreUsageOrInputErrors) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", kGoodProtocol);
+  const auto output = scratch.path() / "results";
+
+  const CliRun no_protocol =
+      run_brb("cyclic " + shell_quoted(brace.string()) + " --out " + shell_quoted(output.string()));
+  EXPECT_EQ(no_protocol.exit_code, 2);
+  EXPECT_NE(no_protocol.err.find("--protocol"), std::string::npos) << no_protocol.err;
+
+  const auto absent = scratch.path() / "absent.json";
+  const CliRun no_brace = run_brb(cyclic_arguments(absent, protocol, output));
+  EXPECT_EQ(no_brace.exit_code, 2);
+  EXPECT_EQ(no_brace.err.rfind("brb: error: " + absent.string() + ": ", 0), 0u) << no_brace.err;
+  EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
+} // namespace
