@@ -7,6 +7,8 @@
 #include "brb/io/protocol.hpp"
 #include "io/scratch_directory.hpp"
 
+#include "support/invalid_json.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -324,25 +326,9 @@ TEST(ProtocolJson, AcceptsCommentsAndIntegralCycleCountsWrittenAsDecimals) {
   EXPECT_EQ(read_protocol(file, 2.0, 0.1).cycle_amplitude, (std::vector<double>{1.0, 1.0}));
 }
 
-struct InvalidProtocol {
-  std::string name;
-  std::function<json()> document;
-  std::string path; ///< JSON path the error must name
-};
-
-void PrintTo(const InvalidProtocol& invalid, std::ostream* out) {
-  *out << invalid.name;
-}
-
-json with(json document, const std::string& key, json value) {
-  document[key] = std::move(value);
-  return document;
-}
-
-json without(json document, const std::string& key) {
-  document.erase(key);
-  return document;
-}
+using InvalidProtocol = test::InvalidJsonCase;
+using test::with;
+using test::without;
 
 /// protocol_in_dy() with member `key` of cycle group `group` set to `value`.
 json with_group_member(std::size_t group, const std::string& key, json value) {

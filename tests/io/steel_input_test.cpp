@@ -4,6 +4,8 @@
 #include "brb/io/material_input.hpp"
 #include "io/scratch_directory.hpp"
 
+#include "support/invalid_json.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -149,25 +151,9 @@ TEST(SteelInput, UnknownKeyListsTheAllowedKeys) {
   }
 }
 
-struct InvalidSteel {
-  std::string name;
-  std::function<json()> document;
-  std::string path; ///< JSON path the error must name
-};
-
-void PrintTo(const InvalidSteel& invalid, std::ostream* out) {
-  *out << invalid.name;
-}
-
-json with(json document, const std::string& key, json value) {
-  document[key] = std::move(value);
-  return document;
-}
-
-json without(json document, const std::string& key) {
-  document.erase(key);
-  return document;
-}
+using InvalidSteel = test::InvalidJsonCase;
+using test::with;
+using test::without;
 
 json with_chaboche(json terms) {
   return with(plastic_steel(), "chaboche", std::move(terms));
