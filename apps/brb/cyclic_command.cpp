@@ -279,6 +279,9 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   const io::LoadingProtocol protocol =
       io::read_protocol(command.protocol, brace.yield_deformation, default_max_step);
   check_output_directory(command.output_directory);
+  for (const std::string& warning : brace.warnings) {
+    notes << "brb: warning: " << command.brace.string() << ": " << warning << "\n";
+  }
 
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
       brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);

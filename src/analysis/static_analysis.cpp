@@ -279,9 +279,10 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
 
 void StaticAnalysis::commit(double control) {
   // Work of the converged forces over the increment (trapezoidal); translations are
-  // additive, rotations enter through the incremental rotation vector.
+  // additive, rotations enter through the incremental rotation vector. A step that passed
+  // a limit point brings its own work (see pseudo_transient).
   double work = 0.0;
-  for (int node = 0; node < model_.node_count(); ++node) {
+  for (int node = 0; node < model_.node_count() && !jump_work_; ++node) {
     const element::Vector3 translation = trial_[node].position - committed_[node].position;
     const element::Vector3 rotation = element::vector_from_rotation(
         trial_[node].rotation * committed_[node].rotation.transpose());
@@ -291,7 +292,8 @@ void StaticAnalysis::commit(double control) {
       work += 0.5 * (committed_internal_force_[r] + internal_force_[r]) * rotation[k];
     }
   }
-  energy_.external_work += work;
+  energy_.external_work += jump_work_.value_or(work);
+  jump_work_.reset();
   for (const auto& element : model_.elements())
     element->commit();
   committed_ = trial_;
@@ -362,30 +364,46 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     return true;
   }
   revert();
+  // Deep in the cuts, a failing step is most likely a limit point (the restrained core
+  // jumping to a higher mode), not a step too long for Newton: try to pass it by
+  // pseudo-transient continuation before cutting further (cutting cannot pass a limit point).
+  if (!at_floor && depth >= settings_.pseudo_transient_depth && pass_limit_point(to, report)) {
+    return true;
+  }
   if (!at_floor) {
     const double middle = 0.5 * (from + to);
     return try_increment(from, middle, depth + 1, report) &&
            try_increment(middle, to, depth + 1, report);
   }
-  // At the floor: pseudo-transient continuation. The static path has no neighbour here (a
-  // limit point: the restrained core jumping to a higher buckling mode, a snap-through);
-  // follow the gradient flow c du/dtau = F_ext - F_int(u) in pseudo-time until it comes to
-  // rest on the next stable branch. The energy the viscosity absorbs on the way is the
-  // energy the jump releases; it is booked separately (EnergyBalance::released_in_jumps).
+  if (pass_limit_point(to, report))
+    return true;
+  revert();
+  report.failure =
+      "step from " + readable(from) + " to " + readable(to) + ": " + last_pseudo_failure_;
+  return false;
+}
+
+bool StaticAnalysis::pass_limit_point(double to, StepReport& report) {
+  // Pseudo-transient continuation. The static path has no neighbour here (a limit point:
+  // the restrained core jumping to a higher buckling mode, a snap-through); follow the
+  // gradient flow c du/dtau = F_ext - F_int(u) in pseudo-time until it comes to rest on the
+  // next stable branch. The energy the viscosity absorbs on the way is the energy the jump
+  // releases; it is booked separately (EnergyBalance::released_in_jumps).
+  revert();
+  set_control_value(to);
+  const Attempt attempt = pseudo_transient(to);
+  report.iterations += attempt.iterations;
+  if (!attempt.converged) {
+    last_pseudo_failure_ = attempt.failure;
+    revert();
+    return false;
+  }
   report.used_regularised_newton = true;
   ++regularised_steps_;
-  set_control_value(to);
-  attempt = pseudo_transient(to);
-  report.iterations += attempt.iterations;
-  if (attempt.converged) {
-    committed_stable_ = !settings_.require_stable_equilibrium || tangent_is_positive_definite();
-    commit(to);
-    ++report.substeps;
-    return true;
-  }
-  revert();
-  report.failure = "step from " + readable(from) + " to " + readable(to) + ": " + attempt.failure;
-  return false;
+  committed_stable_ = !settings_.require_stable_equilibrium || tangent_is_positive_definite();
+  commit(to);
+  ++report.substeps;
+  return true;
 }
 
 StepReport StaticAnalysis::step_to(double target) {
@@ -414,6 +432,10 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   // The energy released is what the jump takes out of the system: the drop of stored plus
   // material-dissipated energy, plus the work the (constant) loads do during it.
   const element::ElementEnergy before = element_energy();
+  const double control_force_before =
+      displacement_control_ ? internal_force_[model::Model::global_dof(
+                                  displacement_control_->first, displacement_control_->second)]
+                            : 0.0;
   Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
   const double stiffness = tangent_.diagonal().cwiseAbs().mean();
   double viscosity = 1e-3 * stiffness;
@@ -440,6 +462,16 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
       }
       energy_.released_in_jumps +=
           before.stored + before.dissipated + load_work - after.stored - after.dissipated;
+      // External work of this step: the control moved first (on the old branch, ending at
+      // control_force_before), then the jump at fixed control, under constant loads.
+      double control_work = 0.0;
+      if (displacement_control_) {
+        const int dof =
+            model::Model::global_dof(displacement_control_->first, displacement_control_->second);
+        control_work = 0.5 * (committed_internal_force_[dof] + control_force_before) *
+                       (control - control_value_);
+      }
+      jump_work_ = control_work + load_work;
       return total;
     }
     viscosity = std::max(0.5 * viscosity, 1e-12 * stiffness);

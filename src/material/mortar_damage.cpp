@@ -235,7 +235,10 @@ MortarDamage3D::Response MortarDamage3D::evaluate(const State& committed,
   response.effective_tangent = voigt_tangent_from_mandel(stiffness);
   response.state.damage_threshold = norm;
   response.state.damage = damage;
-  response.state.dissipated_energy += energy_density * (damage - committed.damage); // (M9)
+  // (M9) on the loading branch psi0 = tau^2 / (2 w^2): the released energy is the closed-form
+  // integral of psi0 dG from the old to the new threshold, divided by w^2.
+  response.state.dissipated_energy +=
+      softening_.released_energy(threshold, norm) / (weight * weight);
   return response;
 }
 
@@ -259,7 +262,6 @@ MortarUniaxial::MortarUniaxial(const MortarParameters& parameters, double charac
 MortarUniaxial::Response MortarUniaxial::evaluate(const State& committed, double strain) const {
   const double modulus = parameters_.youngs_modulus;
   const double effective_stress = modulus * strain;                              // (M1)
-  const double energy_density = 0.5 * effective_stress * strain;                 // psi0
   const double weight = strain >= 0.0 ? 1.0 : 1.0 / strength_ratio(parameters_); // w(theta)
   const double root_modulus = std::sqrt(modulus);
   const double norm = weight * root_modulus * std::abs(strain); // tau (M2), (M4)
@@ -284,7 +286,10 @@ MortarUniaxial::Response MortarUniaxial::evaluate(const State& committed, double
       integrity * modulus - softening_.damage_slope(norm) * effective_stress * norm_slope; // (M8)
   response.state.damage_threshold = norm;
   response.state.damage = damage;
-  response.state.dissipated_energy += energy_density * (damage - committed.damage); // (M9)
+  // (M9) on the loading branch psi0 = tau^2 / (2 w^2): the released energy is the closed-form
+  // integral of psi0 dG from the old to the new threshold, divided by w^2.
+  response.state.dissipated_energy +=
+      softening_.released_energy(threshold, norm) / (weight * weight);
   return response;
 }
 

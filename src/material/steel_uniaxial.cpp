@@ -79,7 +79,6 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
   }
 
   // Damage: tau = |sigma_bar| / sqrt(E) is the uniaxial energy norm.
-  const double elastic_energy = 0.5 * effective_stress * effective_stress / youngs;
   double damage_term = 0.0;
   double integrity = 1.0 - committed.damage;
   if (softening_) {
@@ -113,10 +112,18 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
   const double plastic_dissipation =
       integrity * plastic_increment * (parameters_.yield_stress + recall_energy);
   const double damage_increment = state.damage - committed.damage;
+  // psi0 dG integrated exactly over the threshold's growth (psi0 = r^2 / 2 on the loading
+  // branch), so large steps do not over-count; the hardening energy released by damage,
+  // psi_p dd, at the end of the step.
+  const double softening =
+      damage_increment > 0.0
+          ? softening_->released_energy(
+                std::max(committed.damage_threshold, softening_->initial_threshold()),
+                state.damage_threshold)
+          : 0.0;
   state.dissipated.plastic += plastic_dissipation;
-  state.dissipated.softening += elastic_energy * damage_increment;
-  state.dissipated.total +=
-      plastic_dissipation + (elastic_energy + hardening_energy) * damage_increment;
+  state.dissipated.softening += softening;
+  state.dissipated.total += plastic_dissipation + softening + hardening_energy * damage_increment;
   return response;
 }
 

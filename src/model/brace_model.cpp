@@ -5,8 +5,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 namespace brb::model {
@@ -47,6 +49,122 @@ void check(bool condition, const std::string& field, const std::string& expected
     throw ParameterError(field, expected);
 }
 
+/// Adds the casing around the yielding zone (see brace_model.hpp). Stations: the core nodes
+/// of the yielding zone; each gets a casing node on the straight brace axis.
+CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
+                       const element::BeamIntegration& integration) {
+  const CasingSpec& casing = *spec.casing;
+  check(casing.tube.shape == SectionShape::rectangular_tube ||
+            casing.tube.shape == SectionShape::circular_tube,
+        "casing/tube/shape", "must be rectangular_tube or circular_tube");
+  check(casing.friction_coefficient >= 0.0, "casing/friction", "must be >= 0");
+  check(casing.tangential_stiffness_ratio > 0.0, "casing/tangential_stiffness_ratio",
+        "must be > 0");
+  check(casing.stopper_stiffness_ratio > 0.0, "casing/stopper_stiffness_ratio", "must be > 0");
+  casing.tube_steel.validate();
+  casing.mortar.validate();
+  Model& model = brace.model;
+
+  // stations: core nodes of the yielding zone, from start to end
+  CasingModel result;
+  for (std::size_t e = 0; e < brace.beams.size(); ++e) {
+    if (!brace.in_yielding_zone[e])
+      continue;
+    if (result.core_nodes.empty())
+      result.core_nodes.push_back(brace.nodes[e]);
+    result.core_nodes.push_back(brace.nodes[e + 1]);
+  }
+  const std::size_t stations = result.core_nodes.size();
+  std::vector<double> station_x;
+  for (const int core : result.core_nodes) {
+    station_x.push_back(model.coordinates(core).x());
+    result.nodes.push_back(model.add_node(Vector3(station_x.back(), 0.0, 0.0)));
+  }
+
+  // casing beams: tube steel + mortar fill fibers, characteristic length w_k L per point
+  const section::FiberLayout tube_layout = casing.tube.mesh();
+  const section::FiberLayout fill_layout = casing.fill_mesh(spec.core_section);
+  const double tube_shear =
+      casing.tube_steel.youngs_modulus / (2.0 * (1.0 + casing.tube_steel.poissons_ratio));
+  const double mortar_shear =
+      casing.mortar.youngs_modulus / (2.0 * (1.0 + casing.mortar.poissons_ratio));
+  for (std::size_t n = 0; n + 1 < stations; ++n) {
+    const int first = result.nodes[n], second = result.nodes[n + 1];
+    const double length = station_x[n + 1] - station_x[n];
+    std::vector<CasingSection> sections;
+    sections.reserve(integration.weights.size());
+    for (const double weight : integration.weights) {
+      sections.emplace_back(
+          section::FiberSection<material::SteelUniaxial>(
+              tube_layout, material::SteelUniaxial(casing.tube_steel, weight * length), tube_shear),
+          section::FiberSection<material::MortarUniaxial>(
+              fill_layout, material::MortarUniaxial(casing.mortar, weight * length), mortar_shear));
+    }
+    result.beams.push_back(&model.add_element(std::make_unique<CasingBeam>(
+        std::array<int, 2>{first, second}, model.coordinates(first), model.coordinates(second),
+        Vector3(0.0, 0.0, 1.0), integration, std::move(sections))));
+  }
+
+  // contact links. A y face (normal to y) bears over the tributary length times the core's
+  // extent along z; the penetration turns into strain over the mortar's thickness. The
+  // link has one bearing depth for both directions: the smaller thickness is used (the
+  // stiffer bearing and the earlier crushing; exact for round cores in circular tubes).
+  const auto [extent_y, extent_z] = core_extent(spec.core_section);
+  const auto [thickness_y, thickness_z] = casing.mortar_thickness(spec.core_section);
+  const double bearing_depth = std::min(thickness_y, thickness_z);
+  const double layer_per_length = casing.layer_stiffness.value_or(
+      CasingSpec::kDefaultLayerRatio * casing.mortar.youngs_modulus *
+      std::min(extent_y / thickness_y, extent_z / thickness_z));
+  check(layer_per_length >= 0.0, "casing/layer_stiffness", "must be >= 0 N/mm per mm");
+  for (std::size_t n = 0; n < stations; ++n) {
+    const double before = n > 0 ? station_x[n] - station_x[n - 1] : 0.0;
+    const double after = n + 1 < stations ? station_x[n + 1] - station_x[n] : 0.0;
+    const double tributary = 0.5 * (before + after);
+    result.tributary_length.push_back(tributary);
+    element::CasingContactParameters link;
+    link.gap_y = casing.gap_y;
+    link.gap_z = casing.gap_z;
+    link.bearing_area_y = tributary * extent_z;
+    link.bearing_area_z = tributary * extent_y;
+    link.bearing_depth = bearing_depth;
+    link.mortar = casing.mortar;
+    link.layer_stiffness = layer_per_length * tributary;
+    link.friction_coefficient = casing.friction_coefficient;
+    const double bearing_stiffness = casing.mortar.youngs_modulus *
+                                     std::max(link.bearing_area_y, link.bearing_area_z) /
+                                     bearing_depth;
+    link.tangential_stiffness = casing.tangential_stiffness_ratio * bearing_stiffness;
+    const int core = result.core_nodes[n], shell = result.nodes[n];
+    result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
+        std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link)));
+    if (n == stations / 2)
+      result.interior_link = link;
+  }
+
+  // stopper at the station nearest mid-length of the brace
+  const double middle = 0.5 * spec.total_length();
+  std::size_t nearest = 0;
+  for (std::size_t n = 1; n < stations; ++n) {
+    if (std::abs(station_x[n] - middle) < std::abs(station_x[nearest] - middle))
+      nearest = n;
+  }
+  const section::FiberLayout core_layout = spec.core_section.mesh();
+  const double core_shear = spec.steel.youngs_modulus / (2.0 * (1.0 + spec.steel.poissons_ratio));
+  const double ratio = casing.stopper_stiffness_ratio / spec.yielding_length;
+  result.stopper_stiffness = {ratio * spec.steel.youngs_modulus * core_layout.total_area(),
+                              0.0,
+                              0.0,
+                              ratio * core_shear * core_layout.torsion_constant,
+                              0.0,
+                              0.0};
+  result.stopper_station = nearest;
+  const int core = result.core_nodes[nearest], shell = result.nodes[nearest];
+  result.stopper = &model.add_element(std::make_unique<element::ZeroLengthSpring>(
+      std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell),
+      result.stopper_stiffness));
+  return result;
+}
+
 /// Builds the model with nodes at `offsets` (lateral Y, Z per node; empty: straight).
 BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, double>>& offsets) {
   check(spec.yielding_length > 0.0, "core/yielding_length", "must be > 0 mm");
@@ -82,6 +200,7 @@ BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, doub
   };
   add_node(0.0);
   double flexibility = 0.0; // sum L / (E A)
+  bool lowered_warning_given = false;
   for (const Zone& zone : zones_of(spec)) {
     const section::FiberLayout layout = zone.yielding ? core_layout : zone.section->mesh();
     flexibility += zone.length / (youngs * layout.total_area());
@@ -96,6 +215,17 @@ BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, doub
         // each fiber's characteristic length: its integration weight times the element length
         sections.emplace_back(layout, material::SteelUniaxial(spec.steel, weight * element_length),
                               shear);
+        const auto& softening = sections.back().law().softening();
+        if (softening && softening->strength_lowered() && !lowered_warning_given) {
+          std::ostringstream warning;
+          warning << "core steel: elements too long for the softening (lc = "
+                  << weight * element_length
+                  << " mm >= 2 Gf E / fu^2); damage onset lowered from fu = "
+                  << spec.steel.damage->onset_stress << " to " << softening->onset_stress()
+                  << " MPa where needed (same Gf / lc); use more core elements to avoid it";
+          brace.warnings.push_back(warning.str());
+          lowered_warning_given = true;
+        }
       }
       brace.beams.push_back(&brace.model.add_element(std::make_unique<CoreBeam>(
           std::array<int, 2>{first, second}, brace.model.coordinates(first),
@@ -119,7 +249,16 @@ BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, doub
     for (const Dof dof : {rx, ry, rz})
       model.fix(brace.end_node, dof);
   }
+  if (spec.casing)
+    brace.casing = add_casing(brace, spec, integration);
   return brace;
+}
+
+/// The spec without its casing (for the positions and buckling mode of the core).
+BraceSpec bare_core_of(const BraceSpec& spec) {
+  BraceSpec bare = spec;
+  bare.casing.reset();
+  return bare;
 }
 
 } // namespace
@@ -130,7 +269,7 @@ BraceModel build_brace_model(const BraceSpec& spec) {
         "imperfection/amplitude",
         "must be >= 0 and shorter than the brace (" + std::to_string(total) + " mm)");
   // node x positions of a straight model, for the offsets
-  BraceModel straight = build(spec, {});
+  BraceModel straight = build(bare_core_of(spec), {});
   std::vector<std::pair<double, double>> offsets(straight.nodes.size(), {0.0, 0.0});
   const double amplitude = spec.imperfection.amplitude;
   if (amplitude > 0.0) {
@@ -156,7 +295,7 @@ std::vector<std::pair<double, double>> first_buckling_mode(const BraceSpec& spec
   // Linearised buckling of the perfect brace: K0 phi = lambda (K0 - K1) phi, with K1 the
   // tangent under a small elastic shortening; the geometric stiffness is linear in the
   // axial force for such a small step. The first mode has the largest 1/lambda.
-  BraceModel brace = build(spec, {});
+  BraceModel brace = build(bare_core_of(spec), {});
   analysis::StaticAnalysis analysis(brace.model);
   analysis.use_displacement_control(brace.end_node, ux);
   const Eigen::MatrixXd initial = Eigen::MatrixXd(analysis.free_tangent());

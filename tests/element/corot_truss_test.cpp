@@ -28,7 +28,7 @@ TEST(CorotTruss, RigidRotationGivesNoForceAndStretchFollowsTheLaw) {
   std::vector<NodeConfiguration> nodes{{q * a, q}, {q * b, q}};
   ASSERT_TRUE(truss.evaluate(nodes, force, tangent, failure));
   EXPECT_LT(force.norm(), 1e-10 * steel.youngs_modulus * 100.0); // relative to E A (round-off)
-  nodes[1].position = q * Vector3(1003.0, 0, 0); // 0.3 % strain: yielded
+  nodes[1].position = q * Vector3(1003.0, 0, 0);                 // 0.3 % strain: yielded
   ASSERT_TRUE(truss.evaluate(nodes, force, tangent, failure));
   const material::SteelUniaxial law(steel, 1000.0);
   const double expected = 100.0 * law.evaluate(law.initial_state(), 0.003).stress;

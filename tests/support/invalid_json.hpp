@@ -16,7 +16,9 @@ struct InvalidJsonCase {
   std::string path; ///< JSON path the error must name
 };
 
-inline void PrintTo(const InvalidJsonCase& invalid, std::ostream* out) { *out << invalid.name; }
+inline void PrintTo(const InvalidJsonCase& invalid, std::ostream* out) {
+  *out << invalid.name;
+}
 
 /// `document` with member `key` set to `value`.
 inline nlohmann::json with(nlohmann::json document, const std::string& key, nlohmann::json value) {

@@ -34,7 +34,9 @@ struct NewtonSettings {
   double relative_force_tolerance = 1e-9;
   bool line_search = true;
   int max_halvings = 12;         ///< substep floor: step / 2^max_halvings
-  int fallback_iterations = 500; ///< pseudo-time steps allowed at the floor
+  int fallback_iterations = 500; ///< pseudo-time steps allowed per limit point
+  /// From this many cuts on, a failing step first tries pseudo-transient continuation.
+  int pseudo_transient_depth = 4;
   /// Accept a converged (sub)step only if its tangent is positive definite (a stable
   /// equilibrium under the control); otherwise cut the step. Newton started far from the
   /// path can converge onto an unstable branch (e.g. a bowed column carried straight past
@@ -124,6 +126,8 @@ private:
   void set_control_value(double value);
   Attempt newton(double control, double viscosity, int max_iterations);
   Attempt pseudo_transient(double control);
+  /// Commits the state reached by pseudo-transient continuation at control `to`, if any.
+  bool pass_limit_point(double to, StepReport& report);
   /// Sum of the elements' energies at their last evaluated (trial) state.
   element::ElementEnergy element_energy() const;
   bool try_increment(double from, double to, int depth, StepReport& report);
@@ -162,6 +166,8 @@ private:
   int unstable_accepted_ = 0;
   bool committed_stable_ = true;
   Eigen::VectorXd moved_; // free-DOF motion since the start of a pseudo-time step
+  std::string last_pseudo_failure_;
+  std::optional<double> jump_work_; // external work of a step that passed a limit point
 
   // element buffers
   std::vector<element::NodeConfiguration> element_nodes_;

@@ -50,6 +50,18 @@ public:
   /// G(r) for r >= r0 (0 at r0, tends to 1).
   double damage(double threshold) const { return 1.0 - integrity(threshold); }
 
+  /// Energy released per unit volume while the threshold grows from r_from to r_to on the
+  /// loading branch (psi0 = r^2 / 2 there): the integral of r^2/2 dG, in closed form
+  ///   I(r) = -r0 exp(A (1 - r/r0)) (r/2 + r0/A),  I(inf) - I(r0) = Gf / lc.
+  /// Exact for any step size (a rectangle rule psi0(r_to) dG over-counts large steps).
+  double released_energy(double from, double to) const {
+    const auto primitive = [this](double r) {
+      return -initial_threshold_ * std::exp(softening_parameter_ * (1.0 - r / initial_threshold_)) *
+             (0.5 * r + initial_threshold_ / softening_parameter_);
+    };
+    return primitive(to) - primitive(from);
+  }
+
   /// dG/dr = (r0 / r) exp(A (1 - r/r0)) (1/r + A/r0).
   double damage_slope(double threshold) const {
     const double ratio = threshold / initial_threshold_;

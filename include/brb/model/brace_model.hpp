@@ -2,20 +2,50 @@
 // beams along global x (connection, transition, yielding core, transition, connection),
 // with the initial imperfection, end conditions, and the brace's nominal yield force and
 // yield deformation. Section axes: y along global Y, z along global Z.
+//
+// With a casing (BraceSpec::casing, DESIGN.md section 4, "expanded" form: every internal
+// node in the global system): casing nodes at the core stations of the yielding zone
+// (straight, on the brace axis), co-rotational casing beams whose sections are the tube's
+// steel fibers plus the mortar fill's fibers, a CasingContact between the core node and the
+// casing node at every such station, and a ZeroLengthSpring stopper (ux, rx) at the station
+// nearest mid-length. The casing has no other support.
 #pragma once
 
+#include "brb/element/casing_contact.hpp"
 #include "brb/element/corot_beam_3d.hpp"
+#include "brb/element/zero_length_spring.hpp"
+#include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_uniaxial.hpp"
 #include "brb/model/brace_spec.hpp"
 #include "brb/model/model.hpp"
+#include "brb/section/composite_section.hpp"
 #include "brb/section/fiber_section.hpp"
 
+#include <optional>
+
+#include <string>
 #include <vector>
 
 namespace brb::model {
 
 using CoreSection = section::FiberSection<material::SteelUniaxial>;
 using CoreBeam = element::CorotBeam3D<CoreSection>;
+using CasingSection = section::CompositeSection<section::FiberSection<material::SteelUniaxial>,
+                                                section::FiberSection<material::MortarUniaxial>>;
+using CasingBeam = element::CorotBeam3D<CasingSection>;
+
+/// The casing's part of a brace model (element pointers are owned by the Model).
+struct CasingModel {
+  std::vector<int> nodes;               ///< casing nodes from start to end of the yielding zone
+  std::vector<int> core_nodes;          ///< the core node at each casing station
+  std::vector<double> tributary_length; ///< per station (mm)
+  std::vector<CasingBeam*> beams;       ///< casing elements from start to end
+  std::vector<element::CasingContact*> contacts;  ///< one per station
+  element::ZeroLengthSpring* stopper = nullptr;   ///< core-casing tie at mid-length
+  std::size_t stopper_station = 0;                ///< index into nodes
+  element::CasingContactParameters interior_link; ///< link parameters of an interior station
+  element::SpringStiffness stopper_stiffness{};
+};
 
 struct BraceModel {
   Model model;
@@ -29,14 +59,18 @@ struct BraceModel {
   /// Axial deformation between the outer nodes at first yield of the core (mm): the series
   /// flexibility of the zones, P_y sum L / (E A).
   double yield_deformation = 0.0;
+  std::optional<CasingModel> casing; ///< present when the spec has a casing
+  /// Things the user should know, said once each (e.g. a damage onset stress lowered because
+  /// the elements are too long for the softening, DESIGN.md section 3).
+  std::vector<std::string> warnings;
 };
 
-/// Builds the model of a bare core (the casing is not modelled yet). Throws ParameterError
-/// (with the key of the brace schema) on inconsistent geometry.
+/// Builds the model of the brace, with its casing when spec.casing is set. Throws
+/// ParameterError (with the key of the brace schema) on inconsistent geometry.
 BraceModel build_brace_model(const BraceSpec& spec);
 
 /// Lateral offsets (global Y, Z per node, mm) of the first elastic buckling mode of the
-/// perfect brace, scaled so that the largest lateral offset is 1 mm.
+/// perfect bare core (any casing left out), scaled so that the largest lateral offset is 1 mm.
 std::vector<std::pair<double, double>> first_buckling_mode(const BraceSpec& spec);
 
 } // namespace brb::model

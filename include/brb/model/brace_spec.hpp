@@ -3,15 +3,17 @@
 //
 // Geometry along the brace axis (global x), symmetric about mid-length:
 //   connection | transition | yielding core | transition | connection
-// The casing (issue "BRB element") is not modelled yet: `casing: null` is the bare core.
+// The casing (issue "BRB element") is optional: `casing == nullopt` is the bare core.
 #pragma once
 
 #include "brb/element/beam_integration.hpp"
+#include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_parameters.hpp"
 #include "brb/section/fiber_layout.hpp"
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace brb::model {
 
@@ -46,6 +48,51 @@ struct ImperfectionSpec {
   BendingAxis direction = BendingAxis::z;
 };
 
+/// The casing around the yielding core (DESIGN.md section 4, "expanded" form): a steel
+/// tube filled with mortar, spanning the yielding length, linked to the core at every core
+/// station by a CasingContact and tied to it at mid-length by a stopper (axial and twist).
+///
+/// Mortar fill (a simplification, stated): the tube's inside minus an opening around the
+/// core. Circular tube (round core only): a circular ring from the tube's inner diameter
+/// down to core diameter + 2 gap. Rectangular tube (any core): a rectangular ring from the
+/// tube's inner size down to the core's bounding box + 2 gaps per direction; the mortar
+/// that fills the re-entrant corners of a cruciform core is left out.
+struct CasingSpec {
+  SectionSpec tube; ///< rectangular_tube or circular_tube
+  material::SteelParameters tube_steel;
+  material::MortarParameters mortar;
+  /// Fibers of the mortar fill: through its thickness and around it (circular ring:
+  /// rings x sectors; rectangular ring: through x along each side).
+  int fill_fibers_a = 3, fill_fibers_b = 16;
+  double gap_y = 0.0; ///< clearance per side along y (mm)
+  double gap_z = 0.0; ///< clearance per side along z (mm)
+  /// Coulomb coefficient of the core-casing interface (BRB_SOURCE_FACTS section 4: 0.1).
+  double friction_coefficient = 0.1;
+  /// Unbonding-layer spring per unit length of core (N/mm per mm), always active in both
+  /// transverse directions. Absent: kDefaultLayerRatio times the mortar's bearing stiffness
+  /// per unit length, E_mortar x (core extent) / (mortar thickness).
+  std::optional<double> layer_stiffness;
+  /// Default layer stiffness relative to the bearing stiffness per unit length. Small on
+  /// purpose: the layer only keeps the floating casing stable while the gaps are open. As
+  /// an elastic foundation beta under the core it raises the core's buckling load to at
+  /// most 2 sqrt(beta E I) (long-column limit): 9 kN for the Girona D3 core (beta = 0.0088
+  /// N/mm^2), under 10 % of its yield force, against a bearing stiffness 1e6 times higher.
+  static constexpr double kDefaultLayerRatio = 1e-6;
+  /// Stick penalty of the axial friction relative to the bearing stiffness of the station
+  /// (stiff: the elastic slip before sliding is 1/100 of the bearing's elastic penetration).
+  double tangential_stiffness_ratio = 100.0;
+  /// Stopper stiffness relative to the core's E A / L_y (axial) and G J / L_y (twist).
+  double stopper_stiffness_ratio = 1e3;
+
+  /// The mortar fill's fiber layout around a core of the given section.
+  section::FiberLayout fill_mesh(const SectionSpec& core) const;
+  /// Clear mortar thickness between the core's opening and the tube in y and z (mm).
+  std::pair<double, double> mortar_thickness(const SectionSpec& core) const;
+};
+
+/// Extent of a core section along section y and z (its bounding box, mm).
+std::pair<double, double> core_extent(const SectionSpec& core);
+
 struct BraceSpec {
   std::string name;
   SectionSpec core_section;
@@ -58,6 +105,7 @@ struct BraceSpec {
   std::optional<ZoneSpec> connection;
   EndCondition ends = EndCondition::pinned;
   ImperfectionSpec imperfection;
+  std::optional<CasingSpec> casing; ///< nullopt: bare core
 
   /// Length between the outer nodes (work points), mm.
   double total_length() const;

@@ -1,0 +1,63 @@
+// CompositeSection: two sections acting at the same point of a member and deforming
+// together (plane sections shared), e.g. a BRB casing: the steel tube's fibers with the
+// steel law plus the mortar fill's fibers with MortarUniaxial (DESIGN.md section 4). The
+// resultants, tangents, torsional stiffnesses and energies are the sums of the parts'.
+// Same interface as FiberSection (evaluate, commit, revert_to_committed, energies).
+#pragma once
+
+#include "brb/section/fiber_section.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace brb::section {
+
+template <class SectionA, class SectionB> class CompositeSection {
+public:
+  using Response = SectionResponse;
+
+  CompositeSection(SectionA first, SectionB second)
+      : first_(std::move(first)), second_(std::move(second)) {}
+
+  /// Trial response at a section deformation (e0, kappa_y, kappa_z) shared by both parts.
+  const Response& evaluate(const SectionVector& deformation) {
+    const Response& first = first_.evaluate(deformation);
+    const Response& second = second_.evaluate(deformation);
+    response_.force = first.force + second.force;
+    response_.tangent = first.tangent + second.tangent;
+    return response_;
+  }
+
+  void commit() {
+    first_.commit();
+    second_.commit();
+  }
+  void revert_to_committed() {
+    first_.revert_to_committed();
+    second_.revert_to_committed();
+  }
+
+  /// G J of the parts in parallel (N mm^2).
+  double torsional_stiffness() const {
+    return first_.torsional_stiffness() + second_.torsional_stiffness();
+  }
+  /// Free energy of the trial state per unit length (N mm / mm).
+  double stored_energy() const { return first_.stored_energy() + second_.stored_energy(); }
+  /// Energy dissipated per unit length (N mm / mm), trial state.
+  double dissipated_energy() const {
+    return first_.dissipated_energy() + second_.dissipated_energy();
+  }
+  /// Largest damage of either part (trial state).
+  double max_damage() const { return std::max(first_.max_damage(), second_.max_damage()); }
+
+  const SectionA& first() const { return first_; }
+  const SectionB& second() const { return second_; }
+  const Response& last_response() const { return response_; }
+
+private:
+  SectionA first_;
+  SectionB second_;
+  Response response_;
+};
+
+} // namespace brb::section

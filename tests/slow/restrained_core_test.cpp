@@ -1,0 +1,150 @@
+// Virtual cyclic tests of a restrained brace: the Girona D3 core inside its casing (steel
+// tube + mortar, the "expanded" brace model of DESIGN.md section 4). Slow tests: each run
+// takes about 1 min, most of it in a few compression steps where the core jumps to a higher
+// mode and the solver reaches its substep floor and pseudo-transient continuation.
+#include "brb/analysis/cyclic_test.hpp"
+#include "brb/io/protocol.hpp"
+
+#include "support/brace_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+namespace brb::analysis {
+namespace {
+
+/// The Girona D3 brace (BRB_SOURCE_FACTS section 7) without end zones, pinned, bow L/1000:
+/// core d 22 mm over 2196 mm; casing tube d 115 wall 3 (S275-like, H_kin 2100 MPa),
+/// mortar E 17520, nu 0.2, fc 50, ft 5 MPa, Gf 0.1 N/mm (assumed: the source gives none),
+/// gap 0.5 mm per side (assumed), friction 0.1 (section 4).
+model::BraceSpec girona_d3_restrained(int core_elements = 16) {
+  model::BraceSpec spec = test::girona_d3_bare_core(core_elements, false);
+  spec.name = "girona_D3_restrained";
+  model::CasingSpec casing;
+  casing.tube.shape = model::SectionShape::circular_tube;
+  casing.tube.diameter = 115.0;
+  casing.tube.wall = 3.0;
+  casing.tube.fibers_a = 1;
+  casing.tube.fibers_b = 16;
+  casing.tube_steel = spec.steel;
+  casing.tube_steel.kinematic_hardening = 2100.0;
+  casing.mortar = {17520.0, 0.2, 50.0, 5.0, 0.1};
+  casing.fill_fibers_a = 2;
+  casing.fill_fibers_b = 16;
+  casing.gap_y = casing.gap_z = 0.5;
+  spec.casing = casing;
+  return spec;
+}
+
+struct RestrainedRun {
+  model::BraceModel brace;
+  io::LoadingProtocol protocol;
+  CyclicTestResult result;
+  double seconds = 0.0;
+};
+
+/// Runs full cycles at the given multiples of dy, steps of dy / 10.
+RestrainedRun run_cycles(const model::BraceSpec& spec, const std::vector<double>& multiples_of_dy) {
+  RestrainedRun run{model::build_brace_model(spec), {}, {}, 0.0};
+  const double dy = run.brace.yield_deformation;
+  std::vector<io::CycleGroup> groups;
+  for (const double multiple : multiples_of_dy)
+    groups.push_back({multiple * dy, 1});
+  run.protocol = io::cyclic_protocol(spec.name, groups, dy / 10.0);
+  const auto start = std::chrono::steady_clock::now();
+  run.result = run_cyclic_test(run.brace, run.protocol.deformation, run.protocol.cycle,
+                               run.protocol.cycle_amplitude);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "[ restrained ] " << spec.name << ": " << run.result.steps.size() << " points, "
+            << run.seconds << " s, substeps " << run.result.substeps << ", regularised "
+            << run.result.regularised_steps << ", unstable accepted "
+            << run.result.unstable_accepted << ", max T " << run.result.max_tension << " N, max C "
+            << run.result.max_compression << " N, energy error "
+            << run.result.energy_balance.relative_error() << ", released in jumps "
+            << run.result.energy_balance.released_in_jumps << " N mm"
+            << (run.result.completed ? "" : ", stopped: " + run.result.stop_reason) << "\n";
+  return run;
+}
+
+TEST(RestrainedCore, ModelHasTheCasingAroundTheYieldingZone) {
+  const model::BraceSpec spec = girona_d3_restrained(8);
+  const model::BraceModel brace = model::build_brace_model(spec);
+  ASSERT_TRUE(brace.casing.has_value());
+  const model::CasingModel& casing = *brace.casing;
+  EXPECT_EQ(casing.nodes.size(), 9u);
+  EXPECT_EQ(casing.beams.size(), 8u);
+  EXPECT_EQ(casing.contacts.size(), 9u);
+  ASSERT_NE(casing.stopper, nullptr);
+  EXPECT_EQ(casing.stopper_station, 4u); // mid-length
+  double tributary = 0.0;
+  for (const double length : casing.tributary_length)
+    tributary += length;
+  EXPECT_NEAR(tributary, spec.yielding_length, 1e-9);
+  // y face: tributary length x core extent along z; depth: (109 - 22) / 2 - 0.5 = 43 mm
+  const auto& link = casing.interior_link;
+  EXPECT_NEAR(link.bearing_area_y, spec.yielding_length / 8.0 * 22.0, 1e-9);
+  EXPECT_NEAR(link.bearing_depth, 43.0, 1e-12);
+  // the bare spec keeps its model unchanged
+  EXPECT_FALSE(model::build_brace_model(test::girona_d3_bare_core(8, false)).casing.has_value());
+}
+
+TEST(RestrainedCore, CasingLetsTheCoreCarryCompressionUpToYield) {
+  // Reference: the purpose of a BRB (BRB_SOURCE_FACTS section 1): the casing keeps the core
+  // from buckling, so it yields in compression. The bare core buckles at about
+  // P_E = pi^2 E I / L^2 = 4.9 kN (3 % of Py); restrained, |max compression| > 0.8 Py.
+  const RestrainedRun run = run_cycles(girona_d3_restrained(), {0.5, 2.0});
+  ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
+  EXPECT_GT(-run.result.max_compression, 0.8 * run.brace.yield_force);
+  EXPECT_GT(run.result.max_tension, run.brace.yield_force);
+}
+
+TEST(RestrainedCore, WithoutFrictionCompressionEqualsTensionAndFrictionRaisesIt) {
+  // Reference (issue physics test): without friction nothing transfers axial force to the
+  // casing, and a nearly perfect core (bow L/100000) yields at the same force both ways:
+  // |Pmax / Tmax - 1| < 0.02 over a cycle at 3 dy. With kappa = 0.1 the contact shear adds
+  // to the compression (compression overstrength, BRB_SOURCE_FACTS section 1).
+  model::BraceSpec frictionless = girona_d3_restrained();
+  frictionless.imperfection.amplitude = frictionless.total_length() / 100000.0;
+  frictionless.casing->friction_coefficient = 0.0;
+  frictionless.name = "girona_D3_frictionless";
+
+  const RestrainedRun smooth = run_cycles(frictionless, {3.0});
+  ASSERT_TRUE(smooth.result.completed) << smooth.result.stop_reason;
+  const CycleMetrics& cycle = smooth.result.cycles.back();
+  const double smooth_ratio = -cycle.max_compression / cycle.max_tension;
+  std::cout << "[ restrained ] Pmax/Tmax without friction, perfect core " << smooth_ratio << "\n";
+  EXPECT_NEAR(smooth_ratio, 1.0, 0.02);
+
+  // Friction needs contact: a core with the usual bow (L/1000) buckles into the gap and
+  // bears on the casing; compare kappa = 0 and 0.1 on that core.
+  const auto ratio_of = [](double kappa) {
+    model::BraceSpec spec = girona_d3_restrained();
+    spec.casing->friction_coefficient = kappa;
+    spec.name = "girona_D3_kappa_" + std::to_string(kappa);
+    const RestrainedRun run = run_cycles(spec, {3.0});
+    EXPECT_TRUE(run.result.completed) << run.result.stop_reason;
+    const CycleMetrics& last = run.result.cycles.back();
+    return -last.max_compression / last.max_tension;
+  };
+  const double without = ratio_of(0.0);
+  const double with = ratio_of(0.1);
+  std::cout << "[ restrained ] Pmax/Tmax bowed core: kappa 0 " << without << ", kappa 0.1 " << with
+            << "\n";
+  EXPECT_GT(with, without);
+}
+
+TEST(RestrainedCore, EnergyBalanceHolds) {
+  // Reference: first law over the run, W = stored + dissipated + released in jumps (the
+  // energy the pseudo-viscosity absorbed while the solver passed snap-throughs).
+  const RestrainedRun run = run_cycles(girona_d3_restrained(), {1.0, 2.0});
+  ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
+  EXPECT_GT(run.result.energy_balance.dissipated, 0.0);
+  EXPECT_LT(run.result.energy_balance.relative_error(), 5e-3);
+}
+
+} // namespace
+} // namespace brb::analysis
