@@ -150,21 +150,9 @@ SteelDamagePlasticity3D::Response SteelDamagePlasticity3D::evaluate(const State&
     recall_energy += 1.5 * terms_.recall[k] / terms_.modulus[k] * alpha_squared;
     hardening_energy += 0.75 / terms_.modulus[k] * alpha_squared;
   }
-  const double plastic_dissipation =
-      integrity * plastic_increment * (parameters_.yield_stress + recall_energy);
-  const double damage_increment = state.damage - committed.damage;
-  // psi0 dG integrated exactly over the threshold's growth (psi0 = r^2 / 2 on the loading
-  // branch), so large steps do not over-count; the hardening energy released by damage,
-  // psi_p dd, at the end of the step.
-  const double softening =
-      damage_increment > 0.0
-          ? softening_->released_energy(
-                std::max(committed.damage_threshold, softening_->initial_threshold()),
-                state.damage_threshold)
-          : 0.0;
-  state.dissipated.plastic += plastic_dissipation;
-  state.dissipated.softening += softening;
-  state.dissipated.total += plastic_dissipation + softening + hardening_energy * damage_increment;
+  record_step_dissipation(
+      state, committed, softening_,
+      integrity * plastic_increment * (parameters_.yield_stress + recall_energy), hardening_energy);
   return response;
 }
 

@@ -8,9 +8,12 @@
 // f' <= -E_el < 0: f is strictly decreasing with a unique root in [0, f(0) / E_el].
 #pragma once
 
+#include "brb/material/steel_damage_plasticity_3d.hpp"
 #include "brb/material/steel_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace brb::material {
 
@@ -73,6 +76,26 @@ double solve_return_map(const Consistency& consistency, double trial_function,
       break;
   }
   return increment;
+}
+
+/// Books one step's dissipation in `state.dissipated` (DissipatedEnergy), given the
+/// step's plastic dissipation (1 - d) dp (fy + sum 3/2 gamma/C |alpha|^2) (>= 0 by the
+/// backward-Euler identities) and the stored hardening energy psi_p at the end of the step.
+/// Damage releases psi0 dG, integrated exactly over the threshold's growth (psi0 = r^2 / 2
+/// on the loading branch, so large steps do not over-count), and psi_p dd.
+template <class State>
+void record_step_dissipation(State& state, const State& committed,
+                             const std::optional<ExponentialSoftening>& softening,
+                             double plastic_dissipation, double hardening_energy) {
+  const double damage_increment = state.damage - committed.damage;
+  const double released = damage_increment > 0.0
+                              ? softening->released_energy(std::max(committed.damage_threshold,
+                                                                    softening->initial_threshold()),
+                                                           state.damage_threshold)
+                              : 0.0;
+  state.dissipated.plastic += plastic_dissipation;
+  state.dissipated.softening += released;
+  state.dissipated.total += plastic_dissipation + released + hardening_energy * damage_increment;
 }
 
 } // namespace brb::material
