@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace brb::io {
@@ -126,6 +128,172 @@ model::ZoneSpec read_zone(const JsonValue& object, std::string_view what) {
   return zone;
 }
 
+/// Mortar parameters of the brace schema: E, nu, fc, ft, Gf (lc comes from the element).
+material::MortarParameters read_mortar_object(const JsonValue& object) {
+  object.expect_object({"E", "nu", "fc", "ft", "Gf"},
+                       "an object of mortar parameters {E, nu, fc, ft, Gf} (lc comes from the "
+                       "element)");
+  const auto required = [&object](std::string_view key, std::string_view meaning) {
+    return object.at(key, meaning).number(meaning);
+  };
+  material::MortarParameters mortar;
+  mortar.youngs_modulus = required("E", "Young's modulus E, MPa");
+  mortar.poissons_ratio = required("nu", "Poisson's ratio nu");
+  mortar.compressive_strength = required("fc", "compressive strength fc, MPa");
+  mortar.tensile_strength = required("ft", "tensile strength ft, MPa");
+  mortar.fracture_energy = required("Gf", "fracture energy Gf, N/mm");
+  try {
+    mortar.validate();
+  } catch (const ParameterError& error) {
+    throw InputError(object.source(), object.path() + json_path_of_parameter(error.field()),
+                     error.what());
+  }
+  return mortar;
+}
+
+/// A clearance per side (mm): a finite number >= 0.
+double read_gap(const JsonValue& value) {
+  const double gap = value.number("clearance per side between core and mortar, mm");
+  if (!(gap >= 0.0)) {
+    throw value.error("the gap must be >= 0 mm (got " + describe_json_value(value.json()) + ")");
+  }
+  return gap;
+}
+
+/// "gap": one number for both directions or {"y": mm, "z": mm}.
+std::pair<double, double> read_gaps(const JsonValue& value) {
+  if (!value.json().is_object()) {
+    const double both = read_gap(value);
+    return {both, both};
+  }
+  value.expect_object({"y", "z"}, "a gap object {\"y\": mm, \"z\": mm} or a number");
+  return {read_gap(value.at("y", "clearance per side along y, mm")),
+          read_gap(value.at("z", "clearance per side along z, mm"))};
+}
+
+/// Inside size of a casing tube along y and z (mm).
+std::pair<double, double> tube_inside(const SectionSpec& tube) {
+  if (tube.shape == SectionShape::circular_tube) {
+    const double inside = tube.diameter - 2.0 * tube.wall;
+    return {inside, inside};
+  }
+  return {tube.width - 2.0 * tube.wall, tube.depth - 2.0 * tube.wall};
+}
+
+std::string millimetres(double value) {
+  std::ostringstream text;
+  text << value << " mm";
+  return text.str();
+}
+
+model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) {
+  object.expect_object({"tube", "tube_steel", "mortar", "gap", "friction", "layer_stiffness",
+                        "fill_fibers", "stopper"},
+                       "a casing object {tube, tube_steel, mortar, gap, friction, "
+                       "layer_stiffness, fill_fibers, stopper} or null");
+  model::CasingSpec casing;
+  const JsonValue tube =
+      object.at("tube", "the casing's steel tube: a rectangular_tube or circular_tube section");
+  casing.tube = read_section(tube);
+  const JsonValue tube_shape = tube.at("shape", "section shape");
+  if (casing.tube.shape != SectionShape::rectangular_tube &&
+      casing.tube.shape != SectionShape::circular_tube) {
+    throw tube_shape.error("the casing tube must be a rectangular_tube or circular_tube (got " +
+                           describe_json_value(tube_shape.json()) + ")");
+  }
+  if (casing.tube.shape == SectionShape::circular_tube && core.shape != SectionShape::circle) {
+    throw tube_shape.error("a circular_tube casing needs a circle core; use a rectangular_tube "
+                           "around this core");
+  }
+  casing.tube_steel = read_steel_object(
+      object.at("tube_steel", "the tube steel's parameters (steel schema without lc)"), nullptr);
+  casing.mortar =
+      read_mortar_object(object.at("mortar", "the mortar fill's parameters {E, nu, fc, ft, Gf}"));
+
+  const JsonValue gap = object.at("gap", "clearance per side between core and mortar, mm: a "
+                                         "number or {\"y\": mm, \"z\": mm}");
+  std::tie(casing.gap_y, casing.gap_z) = read_gaps(gap);
+  if (casing.tube.shape == SectionShape::circular_tube && casing.gap_y != casing.gap_z) {
+    throw gap.error("a circular_tube casing has one gap all around: give y and z equal");
+  }
+  if (const auto friction = object.find("friction")) {
+    casing.friction_coefficient = friction->number("Coulomb friction coefficient kappa, -");
+    if (!(casing.friction_coefficient >= 0.0)) {
+      throw friction->error("the friction coefficient must be >= 0 (got " +
+                            describe_json_value(friction->json()) + ")");
+    }
+  }
+  if (const auto layer = object.find("layer_stiffness")) {
+    const double stiffness = layer->number("unbonding-layer stiffness, N/mm per mm");
+    if (!(stiffness > 0.0)) {
+      throw layer->error("the layer stiffness must be > 0 N/mm per mm of core (got " +
+                         describe_json_value(layer->json()) + ")");
+    }
+    casing.layer_stiffness = stiffness;
+  }
+  if (const auto fibers = object.find("fill_fibers")) {
+    if (fibers->expect_array(2, "two fiber counts") != 2) {
+      throw fibers->error("expected two fiber counts [a, b] of the mortar fill (through its "
+                          "thickness and around it)");
+    }
+    casing.fill_fibers_a = positive_count(fibers->element(0), "fiber count");
+    casing.fill_fibers_b = positive_count(fibers->element(1), "fiber count");
+  }
+  if (const auto stopper = object.find("stopper")) {
+    stopper->expect_object({"position"}, "a stopper object {\"position\": fraction}");
+    if (const auto position = stopper->find("position")) {
+      casing.stopper_position =
+          position->number("stopper position, fraction of the casing length from its start");
+      if (!(casing.stopper_position >= 0.0 && casing.stopper_position <= 1.0)) {
+        throw position->error("stopper outside the casing: the position is a fraction of the "
+                              "casing's length from its start, in [0, 1] (got " +
+                              describe_json_value(position->json()) + ")");
+      }
+    }
+  }
+
+  // The core and its gaps must fit inside the tube, leaving room for mortar.
+  const auto [inside_y, inside_z] = tube_inside(casing.tube);
+  const auto [extent_y, extent_z] = model::core_extent(core);
+  for (const auto& [axis, inside, extent, gap_size] :
+       {std::tuple{"y", inside_y, extent_y, casing.gap_y},
+        std::tuple{"z", inside_z, extent_z, casing.gap_z}}) {
+    const double needed = extent + 2.0 * gap_size;
+    if (!(inside > needed)) {
+      throw tube.error(
+          std::string("casing too thin for the core: along ") + axis + " the tube's inside, " +
+          millimetres(inside) + ", must exceed the core's extent + 2 gaps, " + millimetres(needed) +
+          ", to leave room for mortar (short by " + millimetres(needed - inside) + ")");
+    }
+  }
+  // mortar_thickness throws when there is no room; the check above keeps that from happening,
+  // up to rounding
+  std::pair<double, double> thickness{0.0, 0.0};
+  try {
+    thickness = casing.mortar_thickness(core);
+  } catch (const ParameterError&) {
+    // reported below
+  }
+  if (!(thickness.first > 0.0 && thickness.second > 0.0)) {
+    throw tube.error("casing too thin for the core: no mortar between the core's gaps and the "
+                     "tube");
+  }
+  try {
+    const auto layout = casing.fill_mesh(core); // checks the fiber counts (e.g. sectors >= 3)
+    (void)layout;
+  } catch (const ParameterError& error) {
+    const std::string& field = error.field();
+    std::string path = json_pointer_append(object.path(), "fill_fibers");
+    if (field == "rings") {
+      path = json_pointer_append(path, "0");
+    } else if (field == "sectors") {
+      path = json_pointer_append(path, "1");
+    }
+    throw InputError(object.source(), path, "mortar fill: " + field + " " + error.what());
+  }
+  return casing;
+}
+
 } // namespace
 
 model::BraceSpec parse_brace(std::string_view json_text, const std::string& source) {
@@ -237,7 +405,7 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
   }
 
   if (const auto casing = root.find("casing"); casing && !casing->json().is_null()) {
-    throw casing->error("the casing is not modelled yet: give \"casing\": null for a bare core");
+    spec.casing = read_casing(*casing, spec.core_section);
   }
   return spec;
 }

@@ -61,6 +61,8 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
   check(casing.tangential_stiffness_ratio > 0.0, "casing/tangential_stiffness_ratio",
         "must be > 0");
   check(casing.stopper_stiffness_ratio > 0.0, "casing/stopper_stiffness_ratio", "must be > 0");
+  check(casing.stopper_position >= 0.0 && casing.stopper_position <= 1.0, "casing/stopper/position",
+        "must be in [0, 1] (a fraction of the casing's length)");
   casing.tube_steel.validate();
   casing.mortar.validate();
   Model& model = brace.model;
@@ -141,11 +143,12 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
       result.interior_link = link;
   }
 
-  // stopper at the station nearest mid-length of the brace
-  const double middle = 0.5 * spec.total_length();
+  // stopper at the station nearest its position along the casing (default: mid-length)
+  const double target =
+      station_x.front() + casing.stopper_position * (station_x.back() - station_x.front());
   std::size_t nearest = 0;
   for (std::size_t n = 1; n < stations; ++n) {
-    if (std::abs(station_x[n] - middle) < std::abs(station_x[nearest] - middle))
+    if (std::abs(station_x[n] - target) < std::abs(station_x[nearest] - target))
       nearest = n;
   }
   const section::FiberLayout core_layout = spec.core_section.mesh();

@@ -8,7 +8,7 @@
 // (straight, on the brace axis), co-rotational casing beams whose sections are the tube's
 // steel fibers plus the mortar fill's fibers, a CasingContact between the core node and the
 // casing node at every such station, and a ZeroLengthSpring stopper (ux, rx) at the station
-// nearest mid-length. The casing has no other support.
+// nearest CasingSpec::stopper_position (mid-length by default). The casing has no other support.
 #pragma once
 
 #include "brb/element/casing_contact.hpp"
@@ -41,7 +41,7 @@ struct CasingModel {
   std::vector<double> tributary_length; ///< per station (mm)
   std::vector<CasingBeam*> beams;       ///< casing elements from start to end
   std::vector<element::CasingContact*> contacts;  ///< one per station
-  element::ZeroLengthSpring* stopper = nullptr;   ///< core-casing tie at mid-length
+  element::ZeroLengthSpring* stopper = nullptr;   ///< core-casing tie (stopper)
   std::size_t stopper_station = 0;                ///< index into nodes
   element::CasingContactParameters interior_link; ///< link parameters of an interior station
   element::SpringStiffness stopper_stiffness{};

@@ -50,7 +50,8 @@ struct ImperfectionSpec {
 
 /// The casing around the yielding core (DESIGN.md section 4, "expanded" form): a steel
 /// tube filled with mortar, spanning the yielding length, linked to the core at every core
-/// station by a CasingContact and tied to it at mid-length by a stopper (axial and twist).
+/// station by a CasingContact and tied to it by a stopper (axial and twist), by default at
+/// mid-length.
 ///
 /// Mortar fill (a simplification, stated): the tube's inside minus an opening around the
 /// core. Circular tube (round core only): a circular ring from the tube's inner diameter
@@ -83,6 +84,9 @@ struct CasingSpec {
   double tangential_stiffness_ratio = 100.0;
   /// Stopper stiffness relative to the core's E A / L_y (axial) and G J / L_y (twist).
   double stopper_stiffness_ratio = 1e3;
+  /// Where the stopper ties core and casing: a fraction of the casing's length from its
+  /// start, in [0, 1]; it goes to the station nearest that point (0.5: mid-length).
+  double stopper_position = 0.5;
 
   /// The mortar fill's fiber layout around a core of the given section.
   section::FiberLayout fill_mesh(const SectionSpec& core) const;
