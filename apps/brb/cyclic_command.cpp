@@ -129,6 +129,17 @@ Json summary_json(const std::string& name, const model::BraceModel& brace,
                                    {"dissipated", balance.dissipated},
                                    {"released_in_jumps", balance.released_in_jumps},
                                    {"relative_error", balance.relative_error()}};
+  const analysis::BraceIndicators& indicators = result.indicators;
+  summary["element"] =
+      Json{{"max_steel_damage", indicators.max_steel_damage},
+           {"max_mortar_damage", indicators.max_mortar_damage},
+           {"max_core_lateral_displacement", indicators.max_core_lateral_displacement},
+           {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
+           {"max_buckling_half_waves", indicators.max_buckling_half_waves},
+           {"cumulative_inelastic_deformation", indicators.cumulative_inelastic_deformation},
+           {"core_fracture", indicators.core_fracture},
+           {"casing_failure", indicators.casing_failure},
+           {"global_buckling", indicators.global_buckling}};
   summary["units"] = Json{{"force", "N"}, {"length", "mm"}};
   return summary;
 }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -114,6 +115,23 @@ TEST(BareCore, CompressionIsLimitedByBucklingAndTheForceDrops) {
   EXPECT_LT(std::abs(at_extreme), 0.8 * std::abs(peak));
   // and the core has bowed out far beyond its imperfection (global buckling, no casing)
   EXPECT_GT(lateral_at_extreme, 20.0 * spec.imperfection.amplitude);
+  // the indicators say so: global buckling in one half-wave, no casing, no damage law
+  const BraceIndicators& indicators = run.result.indicators;
+  EXPECT_TRUE(indicators.global_buckling);
+  EXPECT_EQ(indicators.max_buckling_half_waves, 1);
+  EXPECT_FALSE(indicators.casing_failure);
+  EXPECT_FALSE(indicators.core_fracture);
+  EXPECT_EQ(indicators.max_steel_damage, 0.0);
+  EXPECT_NEAR(indicators.max_core_lateral_displacement,
+              std::max_element(run.result.steps.begin(), run.result.steps.end(),
+                               [](const CyclicStep& a, const CyclicStep& b) {
+                                 return a.max_lateral_displacement < b.max_lateral_displacement;
+                               })
+                  ->max_lateral_displacement,
+              1e-9);
+  // cumulative inelastic deformation: at least the plastic strokes of the two 5 dy cycles in
+  // tension (each pulls the core about 2 x 5 dy beyond its elastic range)
+  EXPECT_GT(indicators.cumulative_inelastic_deformation, 10.0);
 }
 
 TEST(BareCore, EnergyBalanceHolds) {

@@ -225,7 +225,7 @@ TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
   EXPECT_EQ(keys_of(summary),
             (std::set<std::string>{"brace", "yield_deformation", "yield_force", "max_tension",
                                    "max_compression", "energy_total", "cycles", "completed",
-                                   "stop_reason", "solver", "energy_balance", "units"}));
+                                   "stop_reason", "solver", "energy_balance", "element", "units"}));
   EXPECT_EQ(summary.at("brace"), "stocky plate");
   EXPECT_NEAR(summary.at("yield_force").get<double>(), kYieldForce, 1e-9 * kYieldForce);
   EXPECT_NEAR(summary.at("yield_deformation").get<double>(), kYieldDeformation,

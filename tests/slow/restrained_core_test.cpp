@@ -100,6 +100,19 @@ TEST(RestrainedCore, CasingLetsTheCoreCarryCompressionUpToYield) {
   ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
   EXPECT_GT(-run.result.max_compression, 0.8 * run.brace.yield_force);
   EXPECT_GT(run.result.max_tension, run.brace.yield_force);
+  // and the casing holds: no global buckling, no crushed-through mortar
+  EXPECT_FALSE(run.result.indicators.global_buckling);
+  EXPECT_FALSE(run.result.indicators.casing_failure);
+
+  // Reference (issue physics test, BRB_SOURCE_FACTS section 1): the restrained core buckles
+  // in ever higher modes inside the gap as the compression strain grows.
+  const RestrainedRun elastic = run_cycles(girona_d3_restrained(), {0.5});
+  ASSERT_TRUE(elastic.result.completed) << elastic.result.stop_reason;
+  std::cout << "[ restrained ] half-waves at 0.5 dy: "
+            << elastic.result.indicators.max_buckling_half_waves
+            << ", after 2 dy: " << run.result.indicators.max_buckling_half_waves << "\n";
+  EXPECT_GT(run.result.indicators.max_buckling_half_waves,
+            elastic.result.indicators.max_buckling_half_waves);
 }
 
 TEST(RestrainedCore, WithoutFrictionCompressionEqualsTensionAndFrictionRaisesIt) {

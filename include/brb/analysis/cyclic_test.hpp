@@ -29,6 +29,29 @@ struct CycleMetrics {
   double max_compression = 0.0; ///< N (negative)
 };
 
+/// What the brace did, beyond its force (issue "BRB element" outputs), over the whole test.
+/// Flags follow stated rules (constants in cyclic_test.cpp):
+///  - core fracture: some core fiber's damage reached 0.9;
+///  - casing failure: the mortar under some station crushed through (bearing damage >= 0.9);
+///  - global buckling: the casing (or, without casing, the core) deflected laterally by more
+///    than L_y / 250.
+struct BraceIndicators {
+  double max_steel_damage = 0.0;  ///< largest damage of a core fiber
+  double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
+  double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
+  double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
+  /// Largest number of half-waves of the yielding core's lateral displacement (relative to
+  /// the casing when there is one) while in compression: sign changes along the core + 1,
+  /// over values above 10 % of the largest, in the direction where the core moved most.
+  int max_buckling_half_waves = 0;
+  /// Sum over the steps of |d(delta) - dF / K0| / dy, K0 = Py / dy: the cumulative inelastic
+  /// deformation in multiples of the yield deformation (AISC 341 K3 uses it).
+  double cumulative_inelastic_deformation = 0.0;
+  bool core_fracture = false;
+  bool casing_failure = false;
+  bool global_buckling = false;
+};
+
 struct CyclicTestResult {
   std::vector<CyclicStep> steps;
   std::vector<CycleMetrics> cycles; ///< cycles that were completed
@@ -42,6 +65,7 @@ struct CyclicTestResult {
   int substeps = 0;
   int regularised_steps = 0;
   int unstable_accepted = 0; ///< substeps accepted although their equilibrium was unstable
+  BraceIndicators indicators;
 };
 
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
