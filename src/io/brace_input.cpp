@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -35,6 +36,21 @@ int positive_count(const JsonValue& value, std::string_view meaning) {
                       describe_json_value(value.json()) + ")");
   }
   return static_cast<int>(number);
+}
+
+/// A string option: the value paired with the text found, or an error listing the choices.
+template <class Value>
+Value one_of(const JsonValue& option, std::string_view meaning,
+             std::initializer_list<std::pair<std::string_view, Value>> choices) {
+  const std::string text = option.string(meaning);
+  std::string names;
+  for (const auto& [name, value] : choices) {
+    if (text == name)
+      return value;
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  throw option.error("unknown " + std::string(meaning) + " \"" + text + "\"; expected one of " +
+                     names);
 }
 
 SectionSpec read_section(const JsonValue& object) {
@@ -324,15 +340,10 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
   if (const auto integration = core.find("integration")) {
     integration->expect_object({"rule", "points"}, "an integration object {rule, points}");
     if (const auto rule = integration->find("rule")) {
-      const std::string name = rule->string("integration rule");
-      if (name == "gauss_lobatto") {
-        spec.integration_rule = element::IntegrationRule::gauss_lobatto;
-      } else if (name == "gauss_legendre") {
-        spec.integration_rule = element::IntegrationRule::gauss_legendre;
-      } else {
-        throw rule->error("unknown integration rule \"" + name +
-                          "\"; expected gauss_lobatto or gauss_legendre");
-      }
+      spec.integration_rule = one_of<element::IntegrationRule>(
+          *rule, "integration rule",
+          {{"gauss_lobatto", element::IntegrationRule::gauss_lobatto},
+           {"gauss_legendre", element::IntegrationRule::gauss_legendre}});
     }
     if (const auto points = integration->find("points")) {
       spec.integration_points = positive_count(*points, "number of integration points");
@@ -352,14 +363,9 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
   }
 
   if (const auto ends = root.find("ends")) {
-    const std::string value = ends->string("end conditions");
-    if (value == "pinned") {
-      spec.ends = model::EndCondition::pinned;
-    } else if (value == "fixed") {
-      spec.ends = model::EndCondition::fixed;
-    } else {
-      throw ends->error("unknown end conditions \"" + value + "\"; expected pinned or fixed");
-    }
+    spec.ends = one_of<model::EndCondition>(
+        *ends, "end conditions",
+        {{"pinned", model::EndCondition::pinned}, {"fixed", model::EndCondition::fixed}});
   }
 
   // Default imperfection: a bow of L/1000 about the weak axis.
@@ -372,15 +378,10 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
     imperfection->expect_object({"shape", "amplitude", "direction"},
                                 "an imperfection object {shape, amplitude, direction}");
     if (const auto shape = imperfection->find("shape")) {
-      const std::string value = shape->string("imperfection shape");
-      if (value == "bow") {
-        spec.imperfection.shape = model::ImperfectionShape::bow;
-      } else if (value == "buckling_mode") {
-        spec.imperfection.shape = model::ImperfectionShape::buckling_mode;
-      } else {
-        throw shape->error("unknown imperfection shape \"" + value +
-                           "\"; expected bow or buckling_mode");
-      }
+      spec.imperfection.shape = one_of<model::ImperfectionShape>(
+          *shape, "imperfection shape",
+          {{"bow", model::ImperfectionShape::bow},
+           {"buckling_mode", model::ImperfectionShape::buckling_mode}});
     }
     if (const auto amplitude = imperfection->find("amplitude")) {
       const double value = amplitude->number("imperfection amplitude, mm");
@@ -393,14 +394,9 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
       spec.imperfection.amplitude = value;
     }
     if (const auto direction = imperfection->find("direction")) {
-      const std::string value = direction->string("imperfection direction");
-      if (value == "y") {
-        spec.imperfection.direction = model::BendingAxis::y;
-      } else if (value == "z") {
-        spec.imperfection.direction = model::BendingAxis::z;
-      } else if (value != "weak") {
-        throw direction->error("unknown direction \"" + value + "\"; expected y, z or weak");
-      }
+      spec.imperfection.direction = one_of<model::BendingAxis>(
+          *direction, "imperfection direction",
+          {{"y", model::BendingAxis::y}, {"z", model::BendingAxis::z}, {"weak", weak}});
     }
   }
 
