@@ -183,6 +183,20 @@ void StaticAnalysis::set_control_value(double value) {
   }
 }
 
+bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double control) const {
+  // Round-off in the residual is relative to the largest element force, not to the
+  // assembled sum (large axial forces cancel at the nodes of a chain), and it has a floor:
+  // positions carry a relative error of ~1e-16 of the model's size, which the stiffest
+  // element turns into force. The tolerance must stay above both.
+  const double load =
+      constant_load_.lpNorm<Eigen::Infinity>() +
+      (displacement_control_ ? 0.0 : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
+  const double round_off_floor = 1e-14 * model_extent_ * tangent_.diagonal().cwiseAbs().maxCoeff() /
+                                 settings_.relative_force_tolerance;
+  const double scale = force_scale_ + load + round_off_floor + 1e-6;
+  return residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale;
+}
+
 StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
                                                int max_iterations) {
   Attempt attempt;
@@ -203,23 +217,11 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
       return attempt;
     assembled = false;
     residual = pseudo_residual();
-    // Round-off in the residual is relative to the largest element force, not to the
-    // assembled sum (large axial forces cancel at the nodes of a chain), and it has a floor:
-    // positions carry a relative error of ~1e-16 of the model's size, which the stiffest
-    // element turns into force. The tolerance must stay above both.
-    const double load =
-        constant_load_.lpNorm<Eigen::Infinity>() +
-        (displacement_control_ ? 0.0
-                               : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
-    const double round_off_floor = 1e-14 * model_extent_ *
-                                   tangent_.diagonal().cwiseAbs().maxCoeff() /
-                                   settings_.relative_force_tolerance;
-    const double scale = force_scale_ + load + round_off_floor + 1e-6;
     if (!residual.allFinite()) {
       attempt.failure = "non-finite residual";
       return attempt;
     }
-    if (residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale) {
+    if (residual_converged(residual, control)) {
       attempt.converged = true;
       attempt.iterations = iteration;
       return attempt;
@@ -450,7 +452,7 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
     }
     travelled += moved_;
     // at rest when the plain residual is below tolerance (the state is assembled)
-    if (newton(control, 0.0, 0).converged) {
+    if (residual_converged(free_residual(control), control)) {
       total.converged = true;
       const element::ElementEnergy after = element_energy();
       double load_work = 0.0;

@@ -124,6 +124,9 @@ private:
   Eigen::VectorXd free_residual(double control) const;
   void apply_free_increment(const Eigen::VectorXd& increment, double scale);
   void set_control_value(double value);
+  /// Whether a residual of the last assembled state is below tolerance (with its round-off
+  /// floor).
+  bool residual_converged(const Eigen::VectorXd& residual, double control) const;
   Attempt newton(double control, double viscosity, int max_iterations);
   Attempt pseudo_transient(double control);
   /// Commits the state reached by pseudo-transient continuation at control `to`, if any.
