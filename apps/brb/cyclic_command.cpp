@@ -123,12 +123,13 @@ Json summary_json(const std::string& name, const model::BraceModel& brace,
                            {"iterations", result.iterations},
                            {"substeps", result.substeps},
                            {"regularised_steps", result.regularised_steps},
-                           {"unstable_accepted", result.unstable_accepted}};
-  summary["energy_balance"] = Json{{"external_work", balance.external_work},
-                                   {"stored", balance.stored},
-                                   {"dissipated", balance.dissipated},
-                                   {"released_in_jumps", balance.released_in_jumps},
-                                   {"relative_error", balance.relative_error()}};
+                           {"unstable_accepted", result.unstable_accepted},
+                           {"energy_cuts", result.energy_cuts},
+                           {"energy_tolerance_missed", result.energy_tolerance_missed}};
+  summary["energy_balance"] = Json{
+      {"external_work", balance.external_work}, {"stored", balance.stored},
+      {"dissipated", balance.dissipated},       {"released_in_jumps", balance.released_in_jumps},
+      {"gross_work", balance.gross_work},       {"relative_error", balance.relative_error()}};
   const analysis::BraceIndicators& indicators = result.indicators;
   summary["element"] =
       Json{{"max_steel_damage", indicators.max_steel_damage},
@@ -269,6 +270,18 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           "Largest change of deformation per step, mm, when the protocol gives no max_step "
           "(always for .csv histories); default dy / 10")
       ->type_name("MM");
+  cyclic
+      ->add_option_function<double>(
+          "--energy-tolerance",
+          [&command](const double& tolerance) {
+            if (!(std::isfinite(tolerance) && tolerance >= 0.0 && tolerance < 1.0))
+              throw CLI::ValidationError("--energy-tolerance", "must be a number in [0, 1)");
+            command.energy_tolerance = tolerance;
+          },
+          "Energy-error control: a step is cut while the running sum of |trapezoidal work - "
+          "change of stored and dissipated energy| would exceed this fraction of the gross "
+          "work; default 0 (off)")
+      ->type_name("FRACTION");
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
@@ -294,8 +307,10 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
     notes << "brb: warning: " << command.brace.string() << ": " << warning << "\n";
   }
 
+  analysis::NewtonSettings settings;
+  settings.energy_tolerance = command.energy_tolerance;
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
-      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings);
 
   // Written also when the analysis stopped early: what was computed is a result too.
   const OutputFiles files{command.output_directory / kHysteresisFile,

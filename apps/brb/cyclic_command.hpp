@@ -15,6 +15,9 @@ struct CyclicCommand {
   std::filesystem::path output_directory; ///< receives hysteresis.csv and summary.json
   /// mm: the largest deformation change per step when the protocol gives none (default dy / 10).
   std::optional<double> max_step;
+  /// Energy-error control of the solver (NewtonSettings::energy_tolerance); 0 (default) turns
+  /// it off: it costs many substeps on restrained cores (README, "Energy balance").
+  double energy_tolerance = 0.0;
 };
 
 /// Registers the sub-command and its options (stored into `command` when parsed).

@@ -172,6 +172,8 @@ CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const doubl
   result.substeps = analysis.total_substeps();
   result.regularised_steps = analysis.regularised_steps();
   result.unstable_accepted = analysis.unstable_accepted();
+  result.energy_cuts = analysis.energy_cuts();
+  result.energy_tolerance_missed = analysis.energy_tolerance_missed();
   return result;
 }
 

@@ -26,7 +26,7 @@ std::string readable(double value) {
 
 double EnergyBalance::relative_error() const {
   return std::abs(external_work - stored - dissipated - released_in_jumps) /
-         std::max(std::abs(external_work), 1e-30);
+         std::max(gross_work, 1e-30);
 }
 
 StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
@@ -188,6 +188,8 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
   // assembled sum (large axial forces cancel at the nodes of a chain), and it has a floor:
   // positions carry a relative error of ~1e-16 of the model's size, which the stiffest
   // element turns into force. The tolerance must stay above both.
+  if (residual.size() == 0)
+    return true; // every DOF is restrained or prescribed: nothing to balance
   const double load =
       constant_load_.lpNorm<Eigen::Infinity>() +
       (displacement_control_ ? 0.0 : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
@@ -279,12 +281,11 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
   return attempt;
 }
 
-void StaticAnalysis::commit(double control) {
+double StaticAnalysis::increment_work() const {
   // Work of the converged forces over the increment (trapezoidal); translations are
-  // additive, rotations enter through the incremental rotation vector. A step that passed
-  // a limit point brings its own work (see pseudo_transient).
+  // additive, rotations enter through the incremental rotation vector.
   double work = 0.0;
-  for (int node = 0; node < model_.node_count() && !jump_work_; ++node) {
+  for (int node = 0; node < model_.node_count(); ++node) {
     const element::Vector3 translation = trial_[node].position - committed_[node].position;
     const element::Vector3 rotation = element::vector_from_rotation(
         trial_[node].rotation * committed_[node].rotation.transpose());
@@ -294,7 +295,29 @@ void StaticAnalysis::commit(double control) {
       work += 0.5 * (committed_internal_force_[r] + internal_force_[r]) * rotation[k];
     }
   }
-  energy_.external_work += jump_work_.value_or(work);
+  return work;
+}
+
+bool StaticAnalysis::within_energy_tolerance() const {
+  if (!(settings_.energy_tolerance > 0.0))
+    return true;
+  const double work = increment_work();
+  const element::ElementEnergy energy = element_energy();
+  const double change = energy.stored + energy.dissipated - energy_.stored - energy_.dissipated;
+  const double step_error = work - change;
+  // Round-off floor: the energies are sums of many terms of their own size.
+  const double round_off =
+      1e-13 * (std::abs(energy.stored) + std::abs(energy.dissipated) + std::abs(work));
+  return std::abs(energy_error_sum_ + step_error) <=
+         settings_.energy_tolerance * (energy_.gross_work + std::abs(work)) + round_off;
+}
+
+void StaticAnalysis::commit(double control) {
+  // A step that passed a limit point brings its own work (see pseudo_transient).
+  const double work = jump_work_ ? *jump_work_ : increment_work();
+  const double energy_before = energy_.stored + energy_.dissipated + released_at_commit_;
+  energy_.external_work += work;
+  energy_.gross_work += std::abs(work);
   jump_work_.reset();
   for (const auto& element : model_.elements())
     element->commit();
@@ -310,6 +333,9 @@ void StaticAnalysis::commit(double control) {
   const element::ElementEnergy energy = element_energy();
   energy_.stored = energy.stored;
   energy_.dissipated = energy.dissipated;
+  released_at_commit_ = energy_.released_in_jumps;
+  energy_error_sum_ +=
+      work - (energy_.stored + energy_.dissipated + energy_.released_in_jumps - energy_before);
 }
 
 void StaticAnalysis::revert() {
@@ -333,13 +359,16 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
         load[static_cast<Eigen::Index>(e)] = (to - from) * reference_load_[free_dofs_[e]];
       }
     }
-    if (!pattern_analysed_) {
+    set_control_value(to);
+    // (SparseLU does not return on an empty matrix: with no free DOF there is nothing to
+    // predict.)
+    if (tangent_.rows() > 0 && !pattern_analysed_) {
       solver_.analyzePattern(tangent_);
       pattern_analysed_ = true;
     }
-    solver_.factorize(tangent_);
-    set_control_value(to);
-    if (solver_.info() == Eigen::Success) {
+    if (tangent_.rows() > 0)
+      solver_.factorize(tangent_);
+    if (tangent_.rows() > 0 && solver_.info() == Eigen::Success) {
       const Eigen::VectorXd predictor = solver_.solve(load);
       if (predictor.allFinite())
         apply_free_increment(predictor, 1.0);
@@ -348,19 +377,36 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   }
   report.iterations += attempt.iterations;
   const bool at_floor = depth >= settings_.max_halvings;
+  bool stable = true;
   if (attempt.converged && settings_.require_stable_equilibrium) {
-    const bool stable = tangent_is_positive_definite();
+    stable = tangent_is_positive_definite();
     if (!stable && committed_stable_ && depth < settings_.stability_halvings) {
       attempt.converged = false;
       attempt.failure = "converged to an unstable equilibrium";
-    } else if (!stable && committed_stable_) {
-      ++report.unstable_accepted;
-      ++unstable_accepted_;
     }
-    if (attempt.converged)
-      committed_stable_ = stable;
+  }
+  if (attempt.converged && !within_energy_tolerance()) {
+    if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
+      // A kink inside the step (yield, contact): halve it until the trapezoidal work and
+      // the energies agree (NewtonSettings::energy_tolerance).
+      ++report.energy_cuts;
+      ++energy_cuts_;
+      revert();
+      const double middle = 0.5 * (from + to);
+      return try_increment(from, middle, depth + 1, report) &&
+             try_increment(middle, to, depth + 1, report);
+    }
+    ++report.energy_tolerance_missed;
+    ++energy_tolerance_missed_;
   }
   if (attempt.converged) {
+    if (settings_.require_stable_equilibrium) {
+      if (!stable && committed_stable_) {
+        ++report.unstable_accepted;
+        ++unstable_accepted_;
+      }
+      committed_stable_ = stable;
+    }
     commit(to);
     ++report.substeps;
     return true;

@@ -64,7 +64,9 @@ struct CyclicTestResult {
   int iterations = 0;
   int substeps = 0;
   int regularised_steps = 0;
-  int unstable_accepted = 0; ///< substeps accepted although their equilibrium was unstable
+  int unstable_accepted = 0;       ///< substeps accepted although their equilibrium was unstable
+  int energy_cuts = 0;             ///< substeps cut by the energy-error control
+  int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
   BraceIndicators indicators;
 };
 

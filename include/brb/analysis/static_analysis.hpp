@@ -46,6 +46,18 @@ struct NewtonSettings {
   /// has lost stability: a limit point, or a plastic mechanism).
   bool require_stable_equilibrium = true;
   int stability_halvings = 6;
+  /// Energy-error control (0: off). The trapezoidal work of a step and the change of the
+  /// elements' stored + dissipated energy differ where the path has a kink inside the step
+  /// (a fiber yielding, a contact link closing): the rule integrates a kinked force
+  /// exactly only at the kink. A converged substep is cut when the running sum of these
+  /// per-step differences would exceed `energy_tolerance` times the gross work so far
+  /// (sum of |work| per step), so that at every instant
+  ///   sum |W_step - dE_step| <= energy_tolerance * sum |W_step|.
+  /// Cutting stops after `energy_halvings` cuts (the step is then accepted and counted
+  /// in StepReport::energy_tolerance_missed). Steps that pass a limit point by
+  /// pseudo-transient continuation book their jump separately and are not cut.
+  double energy_tolerance = 0.0;
+  int energy_halvings = 10;
 };
 
 /// What one call of step_to() did.
@@ -55,8 +67,10 @@ struct StepReport {
   int substeps = 1;        ///< converged substeps taken
   int deepest_halving = 0; ///< 0: the step went through whole
   bool used_regularised_newton = false;
-  int unstable_accepted = 0; ///< substeps accepted at the floor with an unstable tangent
-  std::string failure;       ///< why it stopped, when it did not converge
+  int unstable_accepted = 0;       ///< substeps accepted at the floor with an unstable tangent
+  int energy_cuts = 0;             ///< substeps cut by the energy-error control
+  int energy_tolerance_missed = 0; ///< substeps accepted at the energy-control floor
+  std::string failure;             ///< why it stopped, when it did not converge
 };
 
 /// Totals over the analysis (N mm).
@@ -67,7 +81,10 @@ struct EnergyBalance {
   /// Energy absorbed by the pseudo-viscosity while the solver passed limit points (the
   /// energy those jumps release, e.g. a restrained core snapping to a higher mode).
   double released_in_jumps = 0.0;
-  /// |W - stored - dissipated - released_in_jumps| / max(|W|, tiny)
+  /// Gross work: the sum over steps of |work of the step| (N mm). The scale of the balance:
+  /// the net work of a cyclic test after nearly elastic full cycles is close to zero.
+  double gross_work = 0.0;
+  /// |W - stored - dissipated - released_in_jumps| / max(gross_work, tiny)
   double relative_error() const;
 };
 
@@ -102,6 +119,8 @@ public:
   int total_substeps() const { return total_substeps_; }
   int regularised_steps() const { return regularised_steps_; }
   int unstable_accepted() const { return unstable_accepted_; }
+  int energy_cuts() const { return energy_cuts_; }
+  int energy_tolerance_missed() const { return energy_tolerance_missed_; }
 
   /// Solves the initial state (control at zero) so that reactions and energies exist.
   StepReport initialise();
@@ -134,6 +153,11 @@ private:
   /// Sum of the elements' energies at their last evaluated (trial) state.
   element::ElementEnergy element_energy() const;
   bool try_increment(double from, double to, int depth, StepReport& report);
+  /// Trapezoidal work of the converged forces over the trial increment (N mm).
+  double increment_work() const;
+  /// Whether the trial state (converged) keeps the running energy error within
+  /// NewtonSettings::energy_tolerance (always true when the control is off).
+  bool within_energy_tolerance() const;
   void commit(double control);
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
   bool tangent_is_positive_definite() const;
@@ -167,6 +191,10 @@ private:
   int total_substeps_ = 0;
   int regularised_steps_ = 0;
   int unstable_accepted_ = 0;
+  int energy_cuts_ = 0;
+  int energy_tolerance_missed_ = 0;
+  double energy_error_sum_ = 0.0;   // sum over committed steps of |work - change of energy|
+  double released_at_commit_ = 0.0; // released_in_jumps at the last commit
   bool committed_stable_ = true;
   Eigen::VectorXd moved_; // free-DOF motion since the start of a pseudo-time step
   std::string last_pseudo_failure_;
