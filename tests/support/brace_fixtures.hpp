@@ -39,4 +39,27 @@ inline model::BraceSpec girona_d3_bare_core(int core_elements = 16, bool with_en
   return spec;
 }
 
+/// The Girona D3 brace (BRB_SOURCE_FACTS section 7) without end zones, pinned, bow L/1000,
+/// in its casing: core d 22 mm over 2196 mm; casing tube d 115 wall 3 (S275-like, H_kin
+/// 2100 MPa), mortar E 17520, nu 0.2, fc 50, ft 5 MPa, Gf 0.1 N/mm (assumed: the source gives
+/// none), gap 0.5 mm per side (assumed), friction 0.1 (section 4).
+inline model::BraceSpec girona_d3_restrained(int core_elements = 16) {
+  model::BraceSpec spec = girona_d3_bare_core(core_elements, false);
+  spec.name = "girona_D3_restrained";
+  model::CasingSpec casing;
+  casing.tube.shape = model::SectionShape::circular_tube;
+  casing.tube.diameter = 115.0;
+  casing.tube.wall = 3.0;
+  casing.tube.fibers_a = 1;
+  casing.tube.fibers_b = 16;
+  casing.tube_steel = spec.steel;
+  casing.tube_steel.kinematic_hardening = 2100.0;
+  casing.mortar = {17520.0, 0.2, 50.0, 5.0, 0.1};
+  casing.fill_fibers_a = 2;
+  casing.fill_fibers_b = 16;
+  casing.gap_y = casing.gap_z = 0.5;
+  spec.casing = casing;
+  return spec;
+}
+
 } // namespace brb::test
