@@ -203,26 +203,52 @@ std::string millimetres(double value) {
 }
 
 model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) {
-  object.expect_object({"tube", "tube_steel", "mortar", "gap", "friction", "layer_stiffness",
-                        "fill_fibers", "stopper"},
-                       "a casing object {tube, tube_steel, mortar, gap, friction, "
+  object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
+                        "layer_stiffness", "fill_fibers", "stopper"},
+                       "a casing object {tube or outline, tube_steel, mortar, gap, friction, "
                        "layer_stiffness, fill_fibers, stopper} or null");
   model::CasingSpec casing;
+  const auto outline = object.find("outline");
+  if (outline && object.find("tube")) {
+    throw outline->error("give either a steel \"tube\" (filled with mortar) or the \"outline\" "
+                         "of a mortar-only casing, not both");
+  }
+  // A mortar-only casing (no steel tube): its outline, a rectangle or a circle, becomes a
+  // tube of wall 0 whose inside the mortar fills.
   const JsonValue tube =
-      object.at("tube", "the casing's steel tube: a rectangular_tube or circular_tube section");
+      outline ? *outline
+              : object.at("tube", "the casing's steel tube (a rectangular_tube or circular_tube "
+                                  "section), or \"outline\" for a mortar-only casing");
   casing.tube = read_section(tube);
   const JsonValue tube_shape = tube.at("shape", "section shape");
-  if (casing.tube.shape != SectionShape::rectangular_tube &&
-      casing.tube.shape != SectionShape::circular_tube) {
+  if (outline) {
+    casing.steel_tube = false;
+    if (casing.tube.shape == SectionShape::rectangle) {
+      casing.tube.shape = SectionShape::rectangular_tube;
+    } else if (casing.tube.shape == SectionShape::circle) {
+      casing.tube.shape = SectionShape::circular_tube;
+    } else {
+      throw tube_shape.error("the outline of a mortar-only casing must be a rectangle or a "
+                             "circle (got " +
+                             describe_json_value(tube_shape.json()) + ")");
+    }
+    casing.tube.wall = 0.0;
+    if (const auto steel = object.find("tube_steel")) {
+      throw steel->error("a mortar-only casing (\"outline\") has no tube steel");
+    }
+  } else if (casing.tube.shape != SectionShape::rectangular_tube &&
+             casing.tube.shape != SectionShape::circular_tube) {
     throw tube_shape.error("the casing tube must be a rectangular_tube or circular_tube (got " +
                            describe_json_value(tube_shape.json()) + ")");
   }
   if (casing.tube.shape == SectionShape::circular_tube && core.shape != SectionShape::circle) {
-    throw tube_shape.error("a circular_tube casing needs a circle core; use a rectangular_tube "
+    throw tube_shape.error("a circular casing needs a circle core; use a rectangular one "
                            "around this core");
   }
-  casing.tube_steel = read_steel_object(
-      object.at("tube_steel", "the tube steel's parameters (steel schema without lc)"), nullptr);
+  if (casing.steel_tube) {
+    casing.tube_steel = read_steel_object(
+        object.at("tube_steel", "the tube steel's parameters (steel schema without lc)"), nullptr);
+  }
   casing.mortar =
       read_mortar_object(object.at("mortar", "the mortar fill's parameters {E, nu, fc, ft, Gf}"));
 

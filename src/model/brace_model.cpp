@@ -63,7 +63,8 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
   check(casing.stopper_stiffness_ratio > 0.0, "casing/stopper_stiffness_ratio", "must be > 0");
   check(casing.stopper_position >= 0.0 && casing.stopper_position <= 1.0, "casing/stopper/position",
         "must be in [0, 1] (a fraction of the casing's length)");
-  casing.tube_steel.validate();
+  if (casing.steel_tube)
+    casing.tube_steel.validate();
   casing.mortar.validate();
   Model& model = brace.model;
 
@@ -84,10 +85,14 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
   }
 
   // casing beams: tube steel + mortar fill fibers, characteristic length w_k L per point
-  const section::FiberLayout tube_layout = casing.tube.mesh();
+  // (a mortar-only casing has no steel fibers: an empty layout)
+  const section::FiberLayout tube_layout =
+      casing.steel_tube ? casing.tube.mesh() : section::FiberLayout{};
   const section::FiberLayout fill_layout = casing.fill_mesh(spec.core_section);
-  const double tube_shear =
-      casing.tube_steel.youngs_modulus / (2.0 * (1.0 + casing.tube_steel.poissons_ratio));
+  // Without a tube the steel part of the section has no fibers; the core's steel stands in
+  // for its (unused) law so that the section type stays the same.
+  const material::SteelParameters& tube_steel = casing.steel_tube ? casing.tube_steel : spec.steel;
+  const double tube_shear = tube_steel.youngs_modulus / (2.0 * (1.0 + tube_steel.poissons_ratio));
   const double mortar_shear =
       casing.mortar.youngs_modulus / (2.0 * (1.0 + casing.mortar.poissons_ratio));
   for (std::size_t n = 0; n + 1 < stations; ++n) {
@@ -98,7 +103,7 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
     for (const double weight : integration.weights) {
       sections.emplace_back(
           section::FiberSection<material::SteelUniaxial>(
-              tube_layout, material::SteelUniaxial(casing.tube_steel, weight * length), tube_shear),
+              tube_layout, material::SteelUniaxial(tube_steel, weight * length), tube_shear),
           section::FiberSection<material::MortarUniaxial>(
               fill_layout, material::MortarUniaxial(casing.mortar, weight * length), mortar_shear));
     }

@@ -280,6 +280,67 @@ TEST(BraceInput, CasingTooThinSaysByHowMuch) {
   }
 }
 
+TEST(BraceInput, MortarOnlyCasingTakesAnOutline) {
+  // The thesis's small BRB (BRB_SOURCE_FACTS section 6): a 10 x 10 mm core in a 30 x 30 mm
+  // mortar casing, no steel tube.
+  json brace = minimal_brace();
+  brace["core"]["section"] = {{"shape", "rectangle"}, {"width", 10.0}, {"depth", 10.0}};
+  brace["casing"] = girona_casing();
+  brace["casing"].erase("tube");
+  brace["casing"].erase("tube_steel");
+  brace["casing"]["gap"] = 0.05;
+  brace["casing"]["outline"] = {{"shape", "rectangle"}, {"width", 30.0}, {"depth", 30.0}};
+  const model::BraceSpec spec = parse_brace(brace.dump(), "small.json");
+  ASSERT_TRUE(spec.casing.has_value());
+  EXPECT_FALSE(spec.casing->steel_tube);
+  EXPECT_EQ(spec.casing->tube.shape, SectionShape::rectangular_tube);
+  EXPECT_EQ(spec.casing->tube.wall, 0.0);
+  // (30 - 10) / 2 - 0.05 = 9.95 mm of mortar per side
+  const auto [thickness_y, thickness_z] = spec.casing->mortar_thickness(spec.core_section);
+  EXPECT_DOUBLE_EQ(thickness_y, 9.95);
+  EXPECT_DOUBLE_EQ(thickness_z, 9.95);
+  // The casing beams carry the mortar only: no steel fibers, and the fill is the outline
+  // minus the core's opening, 30^2 - 10.1^2 mm^2.
+  const model::BraceModel built = model::build_brace_model(spec);
+  ASSERT_TRUE(built.casing.has_value());
+  const auto& section = built.casing->beams.front()->local_beam().sections().front();
+  EXPECT_EQ(section.first().layout().size(), 0u);
+  EXPECT_NEAR(section.second().layout().total_area(), 900.0 - 10.1 * 10.1, 1e-9);
+}
+
+TEST(BraceInput, MortarOnlyCasingRejectsTubeSteelAndOtherShapes) {
+  json base = minimal_brace();
+  base["core"]["section"] = {{"shape", "rectangle"}, {"width", 10.0}, {"depth", 10.0}};
+  base["casing"] = girona_casing();
+  base["casing"].erase("tube");
+  base["casing"].erase("tube_steel");
+  base["casing"]["gap"] = 0.05;
+  base["casing"]["outline"] = {{"shape", "rectangle"}, {"width", 30.0}, {"depth", 30.0}};
+  const auto expect_rejected = [](const json& brace, const std::string& location,
+                                  const std::string& words) {
+    try {
+      parse_brace(brace.dump(), "small.json");
+      ADD_FAILURE() << "no InputError for " << location;
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.location(), location) << error.what();
+      EXPECT_NE(std::string(error.what()).find(words), std::string::npos) << error.what();
+    }
+  };
+  json with_steel = base;
+  with_steel["casing"]["tube_steel"] = s275();
+  expect_rejected(with_steel, "/casing/tube_steel", "no tube steel");
+  json both = base;
+  both["casing"]["tube"] = girona_casing()["tube"];
+  expect_rejected(both, "/casing/outline", "not both");
+  json cruciform = base;
+  cruciform["casing"]["outline"] = {
+      {"shape", "cruciform"}, {"width", 30.0}, {"depth", 30.0}, {"thickness", 5.0}};
+  expect_rejected(cruciform, "/casing/outline/shape", "rectangle or a circle");
+  json thin = base;
+  thin["casing"]["outline"]["width"] = 10.05; // no room for 10 mm + 2 x 0.05 mm
+  expect_rejected(thin, "/casing/outline", "casing too thin");
+}
+
 TEST(BraceInput, ReadsAFileAsItsText) {
   const testing::ScratchDirectory scratch;
   const auto file = scratch.write("brace.json", full_brace().dump());

@@ -59,7 +59,11 @@ struct ImperfectionSpec {
 /// tube's inner size down to the core's bounding box + 2 gaps per direction; the mortar
 /// that fills the re-entrant corners of a cruciform core is left out.
 struct CasingSpec {
-  SectionSpec tube; ///< rectangular_tube or circular_tube
+  /// rectangular_tube or circular_tube. Without a steel tube (`steel_tube` false) it is the
+  /// outline of a mortar-only casing (wall 0), as in the thesis's small BRB
+  /// (BRB_SOURCE_FACTS section 6: a 30 x 30 mm mortar casing).
+  SectionSpec tube;
+  bool steel_tube = true;
   material::SteelParameters tube_steel;
   material::MortarParameters mortar;
   /// Fibers of the mortar fill: through its thickness and around it (circular ring:
