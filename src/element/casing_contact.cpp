@@ -21,7 +21,8 @@ void CasingContactParameters::validate() const {
   require(gap_z >= 0.0 && std::isfinite(gap_z), "gap_z", "clearance must be >= 0 mm");
   require(bearing_area_y > 0.0, "bearing_area_y", "must be > 0 mm^2");
   require(bearing_area_z > 0.0, "bearing_area_z", "must be > 0 mm^2");
-  require(bearing_depth > 0.0, "bearing_depth", "must be > 0 mm");
+  require(bearing_depth_y > 0.0, "bearing_depth_y", "must be > 0 mm");
+  require(bearing_depth_z > 0.0, "bearing_depth_z", "must be > 0 mm");
   require(layer_stiffness >= 0.0, "layer_stiffness", "must be >= 0 N/mm");
   require(friction_coefficient >= 0.0, "friction", "must be >= 0");
   require(tangential_stiffness > 0.0, "tangential_stiffness", "must be > 0 N/mm");
@@ -33,7 +34,9 @@ CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_posit
                              const Vector3& casing_position,
                              const CasingContactParameters& parameters)
     : nodes_(nodes), initial_offset_(core_position - casing_position), parameters_(parameters),
-      bearing_((parameters.validate(), parameters.mortar), parameters.bearing_depth),
+      bearing_{material::MortarUniaxial((parameters.validate(), parameters.mortar),
+                                        parameters.bearing_depth_y),
+               material::MortarUniaxial(parameters.mortar, parameters.bearing_depth_z)},
       friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}) {}
 
 bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
@@ -55,26 +58,28 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   for (int direction = 1; direction <= 2; ++direction) {
     const double gap = direction == 1 ? parameters_.gap_y : parameters_.gap_z;
     const double area = direction == 1 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
+    const double depth = direction == 1 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
+    const material::MortarUniaxial& bearing = bearing_[direction - 1];
     const double motion = relative_[direction];
     const int face = 2 * (direction - 1) + (motion >= 0.0 ? 0 : 1);
     const double penetration = std::abs(motion) - gap;
     if (penetration > 0.0) {
-      const double strain = -penetration / parameters_.bearing_depth;
-      const auto response = bearing_.evaluate(committed_.faces[face], strain);
+      const double strain = -penetration / depth;
+      const auto response = bearing.evaluate(committed_.faces[face], strain);
       if (!std::isfinite(response.stress)) {
         failure = "casing contact: non-finite bearing stress";
         return false;
       }
       trial_.faces[face] = response.state;
       trial_.bearing_strain[face] = strain;
-      const double bearing = -area * response.stress; // >= 0, pushes the core back
-      const double stiffness = area * response.tangent / parameters_.bearing_depth;
+      const double bearing_force = -area * response.stress; // >= 0, pushes the core back
+      const double stiffness = area * response.tangent / depth;
       const double sign = motion >= 0.0 ? 1.0 : -1.0;
-      local_force[direction] += sign * bearing;
+      local_force[direction] += sign * bearing_force;
       local_tangent(direction, direction) += stiffness;
-      normal_force += bearing;
+      normal_force += bearing_force;
       normal_rate[direction] += sign * stiffness;
-      in_contact_ = in_contact_ || bearing > 0.0;
+      in_contact_ = in_contact_ || bearing_force > 0.0;
     }
     // unbonding layer: always active
     local_force[direction] += parameters_.layer_stiffness * motion;
@@ -109,9 +114,12 @@ ElementEnergy CasingContact::energy() const {
   const double layer = parameters_.layer_stiffness;
   energy.stored = 0.5 * layer * (relative_[1] * relative_[1] + relative_[2] * relative_[2]);
   for (int face = 0; face < 4; ++face) {
-    const double area = face < 2 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
-    const double volume = area * parameters_.bearing_depth;
-    energy.stored += volume * bearing_.free_energy(trial_.faces[face], trial_.bearing_strain[face]);
+    const int direction = face < 2 ? 0 : 1;
+    const double area = direction == 0 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
+    const double depth = direction == 0 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
+    const double volume = area * depth;
+    energy.stored +=
+        volume * bearing_[direction].free_energy(trial_.faces[face], trial_.bearing_strain[face]);
     energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.faces[face]);
   }
   // friction: the stick spring's energy is stored, the slip work dissipated

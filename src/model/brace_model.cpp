@@ -113,12 +113,10 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
   }
 
   // contact links. A y face (normal to y) bears over the tributary length times the core's
-  // extent along z; the penetration turns into strain over the mortar's thickness. The
-  // link has one bearing depth for both directions: the smaller thickness is used (the
-  // stiffer bearing and the earlier crushing; exact for round cores in circular tubes).
+  // extent along z; the penetration turns into strain over the mortar's thickness in that
+  // direction (a plate core in a square tube has a thin and a thick side).
   const auto [extent_y, extent_z] = core_extent(spec.core_section);
   const auto [thickness_y, thickness_z] = casing.mortar_thickness(spec.core_section);
-  const double bearing_depth = std::min(thickness_y, thickness_z);
   const double layer_per_length = casing.layer_stiffness.value_or(
       CasingSpec::kDefaultLayerRatio * casing.mortar.youngs_modulus *
       std::min(extent_y / thickness_y, extent_z / thickness_z));
@@ -133,13 +131,14 @@ CasingModel add_casing(BraceModel& brace, const BraceSpec& spec,
     link.gap_z = casing.gap_z;
     link.bearing_area_y = tributary * extent_z;
     link.bearing_area_z = tributary * extent_y;
-    link.bearing_depth = bearing_depth;
+    link.bearing_depth_y = thickness_y;
+    link.bearing_depth_z = thickness_z;
     link.mortar = casing.mortar;
     link.layer_stiffness = layer_per_length * tributary;
     link.friction_coefficient = casing.friction_coefficient;
-    const double bearing_stiffness = casing.mortar.youngs_modulus *
-                                     std::max(link.bearing_area_y, link.bearing_area_z) /
-                                     bearing_depth;
+    const double bearing_stiffness =
+        casing.mortar.youngs_modulus *
+        std::max(link.bearing_area_y / thickness_y, link.bearing_area_z / thickness_z);
     link.tangential_stiffness = casing.tangential_stiffness_ratio * bearing_stiffness;
     const int core = result.core_nodes[n], shell = result.nodes[n];
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(

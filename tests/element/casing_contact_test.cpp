@@ -19,7 +19,8 @@ CasingContactParameters small_brb_contact(double bearing_depth = 10.0) {
   parameters.gap_z = 0.12;
   parameters.bearing_area_y = 200.0;
   parameters.bearing_area_z = 200.0;
-  parameters.bearing_depth = bearing_depth;
+  parameters.bearing_depth_y = bearing_depth;
+  parameters.bearing_depth_z = bearing_depth;
   parameters.mortar = {17520.0, 0.2, 39.92, 3.992, 0.75};
   parameters.layer_stiffness = 10.0;
   parameters.friction_coefficient = 0.1;
@@ -64,6 +65,35 @@ TEST(CasingContact, NoBearingUntilTheGapClosesThenMortarStiffness) {
   }
 }
 
+TEST(CasingContact, EachDirectionBearsOverItsOwnMortarDepth) {
+  // Reference (theory): a plate core in a square tube has more mortar beside its thin side
+  // than beside its wide side. Elastic bearing stiffness A E / depth per direction, and the
+  // crushing penetration fc / E x depth, differ by the ratio of the depths (here 10 and
+  // 40 mm, depth 100 mm would not crush in this range).
+  auto parameters = small_brb_contact();
+  parameters.bearing_depth_y = 10.0;
+  parameters.bearing_depth_z = 40.0;
+  const double penetration = 0.01; // elastic on both: crushing starts at 0.0228 mm for 10 mm
+  Probe along_y(parameters);
+  along_y.move_core({0.0, 0.12 + penetration, 0.0});
+  Probe along_z(parameters);
+  along_z.move_core({0.0, 0.0, 0.12 + penetration});
+  const double layer = 10.0 * (0.12 + penetration);
+  EXPECT_NEAR(along_y.force[1] - layer, 200.0 * 17520.0 / 10.0 * penetration, 1e-9);
+  EXPECT_NEAR(along_z.force[2] - layer, 200.0 * 17520.0 / 40.0 * penetration, 1e-9);
+  // Crushing: the y faces crush at 4x less penetration than the z faces.
+  const double crush_y = 39.92 / 17520.0 * 10.0, crush_z = 39.92 / 17520.0 * 40.0;
+  Probe crushing_y(parameters);
+  crushing_y.move_core({0.0, 0.12 + 1.5 * crush_y, 0.0});
+  EXPECT_GT(crushing_y.contact.max_mortar_damage(), 0.0);
+  Probe holding_z(parameters);
+  holding_z.move_core({0.0, 0.0, 0.12 + 1.5 * crush_y});
+  EXPECT_EQ(holding_z.contact.max_mortar_damage(), 0.0);
+  Probe crushing_z(parameters);
+  crushing_z.move_core({0.0, 0.0, 0.12 + 1.5 * crush_z});
+  EXPECT_GT(crushing_z.contact.max_mortar_damage(), 0.0);
+}
+
 TEST(CasingContact, BearingCrushesAtTheMortarStrengthOnThatFaceOnly) {
   // Reference: the mortar law in compression: damage starts at fc, so the bearing force
   // peaks at fc A and then softens; the opposite face keeps its full capacity.
@@ -71,7 +101,7 @@ TEST(CasingContact, BearingCrushesAtTheMortarStrengthOnThatFaceOnly) {
   Probe probe(parameters);
   double peak = 0.0;
   for (int i = 1; i <= 400; ++i) {
-    const double crush_penetration = 39.92 / 17520.0 * parameters.bearing_depth;
+    const double crush_penetration = 39.92 / 17520.0 * parameters.bearing_depth_y;
     const double u = 0.12 + 5.0 * crush_penetration * i / 400.0; // to 5x the crush penetration
     probe.move_core({0.0, u, 0.0});
     peak = std::max(peak, probe.contact.link_force()[1] - 10.0 * u);

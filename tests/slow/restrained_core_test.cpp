@@ -66,7 +66,8 @@ TEST(RestrainedCore, ModelHasTheCasingAroundTheYieldingZone) {
   // y face: tributary length x core extent along z; depth: (109 - 22) / 2 - 0.5 = 43 mm
   const auto& link = casing.interior_link;
   EXPECT_NEAR(link.bearing_area_y, spec.yielding_length / 8.0 * 22.0, 1e-9);
-  EXPECT_NEAR(link.bearing_depth, 43.0, 1e-12);
+  EXPECT_NEAR(link.bearing_depth_y, 43.0, 1e-12);
+  EXPECT_NEAR(link.bearing_depth_z, 43.0, 1e-12);
   // the bare spec keeps its model unchanged
   EXPECT_FALSE(model::build_brace_model(test::girona_d3_bare_core(8, false)).casing.has_value());
 }

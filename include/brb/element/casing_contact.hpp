@@ -2,7 +2,8 @@
 // (DESIGN.md section 4, BRB_SOURCE_FACTS sections 3-4). In each transverse direction
 // (section y and z) the core has a clearance `gap` to the casing on both sides; once it
 // closes, the core bears on the mortar: the bearing stress follows the mortar damage law at
-// the strain penetration / bearing_depth, over the bearing area (local crushing softens it,
+// the strain penetration / bearing depth (the mortar's thickness in that direction), over
+// the bearing area (local crushing softens it,
 // and each of the four faces keeps its own damage). An always-active soft spring models the
 // unbonding layer (it keeps the casing stable while gaps are open). Along the axis, Coulomb
 // friction acts with the total bearing force as normal force.
@@ -26,11 +27,14 @@ struct CasingContactParameters {
   double gap_z = 0.0;                 ///< clearance on each side along z (mm), >= 0
   double bearing_area_y = 0.0;        ///< area bearing on a y face (mm^2)
   double bearing_area_z = 0.0;        ///< area bearing on a z face (mm^2)
-  double bearing_depth = 0.0;         ///< mortar depth turning penetration into strain (mm)
-  material::MortarParameters mortar;  ///< bearing law
-  double layer_stiffness = 0.0;       ///< unbonding layer spring per direction (N/mm), >= 0
-  double friction_coefficient = 0.1;  ///< kappa (source: 0.1)
-  double tangential_stiffness = 0.0;  ///< stick penalty along the axis (N/mm)
+  /// Mortar depth turning penetration into strain on a y face and on a z face (mm): the
+  /// mortar's thickness in that direction (a plate core in a square tube has two).
+  double bearing_depth_y = 0.0;
+  double bearing_depth_z = 0.0;
+  material::MortarParameters mortar; ///< bearing law
+  double layer_stiffness = 0.0;      ///< unbonding layer spring per direction (N/mm), >= 0
+  double friction_coefficient = 0.1; ///< kappa (source: 0.1)
+  double tangential_stiffness = 0.0; ///< stick penalty along the axis (N/mm)
 
   /// Throws ParameterError naming the key (gap_y, gap_z, bearing_area_y, ...).
   void validate() const;
@@ -67,7 +71,9 @@ private:
   std::array<int, 2> nodes_;
   Vector3 initial_offset_;
   CasingContactParameters parameters_;
-  material::MortarUniaxial bearing_;
+  /// Bearing law of the y faces and of the z faces (their characteristic lengths are the
+  /// bearing depths, so that crushing dissipates G_f per unit area of face).
+  std::array<material::MortarUniaxial, 2> bearing_;
   material::PenaltyFriction friction_;
   State committed_;
   State trial_;
