@@ -1,0 +1,238 @@
+// The condensed BRB macro element (DESIGN.md section 4): its condensed tangent against
+// central differences of its own forces, objectivity (a rotated brace gives the axis-aligned
+// response), commit / revert semantics, and agreement with the expanded brace model.
+#include "brb/analysis/brb_element.hpp"
+#include "brb/analysis/cyclic_test.hpp"
+#include "brb/io/protocol.hpp"
+
+#include "support/brace_fixtures.hpp"
+#include "support/brb_element_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace brb::analysis {
+namespace {
+
+using element::Matrix3;
+using element::NodeConfiguration;
+using element::Vector3;
+
+model::BraceSpec small_bare_core() {
+  return test::girona_d3_bare_core(4, true); // 4 core elements + 4 end-zone elements
+}
+
+struct Evaluation {
+  bool ok = false;
+  Eigen::VectorXd force;
+  Eigen::MatrixXd tangent;
+  std::string failure;
+};
+
+Evaluation evaluate(BRBElement& element, std::span<const NodeConfiguration> nodes) {
+  Evaluation result;
+  result.ok = element.evaluate(nodes, result.force, result.tangent, result.failure);
+  return result;
+}
+
+TEST(BRBElementCondensed, TangentMatchesCentralDifferencesOfTheCondensedForces) {
+  // Reference: central differences of the element's own forces, each evaluation solving the
+  // internal model from the committed state. Committed state: yielded in tension (2 dy);
+  // trial: further tension with lateral motion and end spins (geometric terms), still
+  // loading plastically, so +-h stays on one branch.
+  const model::BraceSpec spec = small_bare_core();
+  NewtonSettings tight;
+  tight.relative_force_tolerance = 1e-12;
+  tight.position_round_off = 1e-16;
+  const double length = spec.total_length();
+  BRBElement element({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec, std::nullopt,
+                     tight);
+  const double dy = element.internal_brace().yield_deformation;
+  const auto committed = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                                   Vector3(2.0 * dy, 0.0, 0.0), Vector3::Zero());
+  ASSERT_TRUE(evaluate(element, committed).ok);
+  element.commit();
+  ASSERT_GT(element.axial_force(), element.internal_brace().yield_force);
+
+  std::array<NodeConfiguration, 2> base = test::outer_configuration(
+      Vector3::Zero(), Matrix3::Identity(), length, Vector3(2.3 * dy, 0.4, -0.3),
+      Vector3(1e-3, -2e-3, 1.5e-3));
+  base[0].rotation = element::rotation_from_vector(Vector3(0.5e-3, 1e-3, -0.5e-3));
+  const Evaluation at_base = evaluate(element, base);
+  ASSERT_TRUE(at_base.ok) << at_base.failure;
+
+  Eigen::MatrixXd numerical(12, 12);
+  for (int j = 0; j < 12; ++j) {
+    const bool spin = j % 6 >= 3;
+    const double h = 1e-4; // mm or rad: the nested solve's round-off limits smaller steps
+    std::array<Eigen::VectorXd, 2> forces;
+    for (int side = 0; side < 2; ++side) {
+      auto nodes = base;
+      const double step = side == 0 ? h : -h;
+      Vector3 delta = Vector3::Zero();
+      delta[j % 3] = step;
+      NodeConfiguration& node = nodes[j / 6];
+      if (spin)
+        node.rotation = element::rotation_from_vector(delta) * node.rotation;
+      else
+        node.position += delta;
+      const Evaluation perturbed = evaluate(element, nodes);
+      ASSERT_TRUE(perturbed.ok) << perturbed.failure;
+      forces[side] = perturbed.force;
+    }
+    numerical.col(j) = (forces[0] - forces[1]) / (2.0 * h);
+  }
+  // compare the translational and the rotational blocks each on its own scale
+  const auto block_error = [&](int rows, int cols) {
+    Eigen::MatrixXd a(6, 6), b(6, 6);
+    for (int i = 0; i < 2; ++i)
+      for (int k = 0; k < 2; ++k) {
+        a.block<3, 3>(3 * i, 3 * k) = at_base.tangent.block<3, 3>(6 * i + rows, 6 * k + cols);
+        b.block<3, 3>(3 * i, 3 * k) = numerical.block<3, 3>(6 * i + rows, 6 * k + cols);
+      }
+    return (a - b).norm() / b.norm();
+  };
+  if (std::getenv("BRB_DEBUG"))
+    std::printf("%g %g %g %g\n", block_error(0, 0), block_error(0, 3), block_error(3, 0),
+                block_error(3, 3));
+  EXPECT_LT(block_error(0, 0), 1e-5);
+  EXPECT_LT(block_error(0, 3), 1e-5);
+  EXPECT_LT(block_error(3, 0), 1e-5);
+  EXPECT_LT(block_error(3, 3), 1e-5);
+}
+
+TEST(BRBElementCondensed, RotatedBraceGivesTheAxisAlignedResponse) {
+  // Objectivity: the same brace along an arbitrary direction (its section z turned with
+  // it), driven through the same motion in its own axes, must give the same axial force and
+  // the same forces in its axes (f_rotated = Q f_aligned), to round-off.
+  const model::BraceSpec spec = small_bare_core();
+  const double length = spec.total_length();
+  const Matrix3 turn = element::rotation_from_vector(Vector3(0.3, -0.7, 1.1));
+  const Vector3 start(100.0, -50.0, 30.0);
+  BRBElement aligned({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec);
+  BRBElement rotated({0, 1}, start, start + turn * Vector3(length, 0.0, 0.0), spec,
+                     turn * Vector3::UnitZ());
+  ASSERT_LT((rotated.placement().axes - turn).norm(), 1e-12);
+  const double dy = aligned.internal_brace().yield_deformation;
+  // tension past yield, then compression past the buckling load of the bare core (fixed
+  // ends: all outer DOF prescribed), with a small end spin
+  for (const double multiple : {0.5, 1.5, 3.0, 1.0, -0.5, -1.0, -1.5, 0.0}) {
+    const Vector3 motion(multiple * dy, 0.0, 0.0);
+    const Vector3 spin(0.0, 1e-4 * multiple, 0.0);
+    const auto a = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length, motion,
+                                             spin);
+    const auto r = test::outer_configuration(start, turn, length, motion, spin);
+    const Evaluation ea = evaluate(aligned, a);
+    const Evaluation er = evaluate(rotated, r);
+    ASSERT_TRUE(ea.ok) << ea.failure;
+    ASSERT_TRUE(er.ok) << er.failure;
+    aligned.commit();
+    rotated.commit();
+    const double scale = aligned.internal_brace().yield_force;
+    EXPECT_NEAR(rotated.axial_force(), aligned.axial_force(), 1e-8 * scale) << multiple << " dy";
+    EXPECT_NEAR(rotated.deformation(), aligned.deformation(), 1e-9 * length);
+    for (int block = 0; block < 4; ++block) {
+      const Vector3 expected = turn * ea.force.segment<3>(3 * block);
+      const double unit = block % 2 == 0 ? scale : scale * length;
+      EXPECT_LT((er.force.segment<3>(3 * block) - expected).norm(), 1e-8 * unit);
+    }
+  }
+  EXPECT_NEAR(rotated.energy().dissipated, aligned.energy().dissipated,
+              1e-8 * aligned.energy().dissipated);
+}
+
+TEST(BRBElementCondensed, RevertKeepsTheCommittedStateAndEvaluationsDoNotAccumulate) {
+  // Evaluating a trial state that yields, then reverting, must leave the element as
+  // committed: a later evaluation at the committed configuration gives the committed force
+  // (elastic), however many trial evaluations came before.
+  const model::BraceSpec spec = small_bare_core();
+  const double length = spec.total_length();
+  BRBElement element({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec);
+  const double dy = element.internal_brace().yield_deformation;
+  const auto elastic = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                                 Vector3(0.5 * dy, 0.0, 0.0), Vector3::Zero());
+  const Evaluation first = evaluate(element, elastic);
+  ASSERT_TRUE(first.ok);
+  element.commit();
+  const double committed_force = element.axial_force();
+  const auto plastic = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                                 Vector3(4.0 * dy, 0.0, 0.0), Vector3::Zero());
+  for (int k = 0; k < 3; ++k)
+    ASSERT_TRUE(evaluate(element, plastic).ok);
+  EXPECT_GT(element.energy().dissipated, 0.0);
+  element.revert_to_committed();
+  EXPECT_EQ(element.energy().dissipated, 0.0);
+  const Evaluation again = evaluate(element, elastic);
+  ASSERT_TRUE(again.ok);
+  EXPECT_NEAR((again.force - first.force).norm(), 0.0, 1e-9 * committed_force);
+  EXPECT_EQ(element.energy().dissipated, 0.0);
+}
+
+/// Force of the condensed element in a global model and of the expanded model, step by step
+/// through a protocol at the given multiples of dy (steps of dy / 10).
+struct Comparison {
+  double largest_difference = 0.0; ///< N, largest |F_condensed - F_expanded|
+  double largest_force = 0.0;      ///< N, largest |F_expanded|
+  std::size_t steps = 0;
+};
+
+Comparison compare_condensed_and_expanded(const model::BraceSpec& spec,
+                                          const std::vector<double>& multiples_of_dy) {
+  model::BraceModel expanded = model::build_brace_model(spec);
+  const double dy = expanded.yield_deformation;
+  std::vector<io::CycleGroup> groups;
+  for (const double multiple : multiples_of_dy)
+    groups.push_back({multiple * dy, 1});
+  const io::LoadingProtocol protocol = io::cyclic_protocol("comparison", groups, dy / 10.0);
+  // Both converged well below the compared difference: the default residual floor (1e-14
+  // of the model's size times the stiffest element) is 0.25 N here.
+  NewtonSettings tight;
+  tight.relative_force_tolerance = 1e-12;
+  tight.position_round_off = 1e-16;
+  const CyclicTestResult reference = run_cyclic_test(
+      expanded, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, tight);
+  EXPECT_TRUE(reference.completed) << reference.stop_reason;
+
+  auto condensed = test::condensed_brace_model(spec, tight);
+  StaticAnalysis analysis(condensed->model, tight);
+  analysis.use_displacement_control(condensed->end_node, model::ux);
+  Comparison comparison;
+  for (std::size_t k = 1; k < reference.steps.size(); ++k) {
+    const StepReport report = analysis.step_to(protocol.deformation[k]);
+    EXPECT_TRUE(report.converged) << "step " << k << ": " << report.failure;
+    if (!report.converged)
+      break;
+    const double expected = reference.steps[k].force;
+    if (std::getenv("BRB_DEBUG"))
+      std::printf("%zu d %g Fc %.12g Fe %.12g diff %g sub %d/%d\n", k, protocol.deformation[k],
+                  analysis.control_force(), expected, analysis.control_force() - expected,
+                  report.substeps, reference.steps[k].substeps);
+    comparison.largest_difference =
+        std::max(comparison.largest_difference, std::abs(analysis.control_force() - expected));
+    comparison.largest_force = std::max(comparison.largest_force, std::abs(expected));
+    // the element's own axial force output is the same force (pinned ends, straight chord)
+    EXPECT_NEAR(condensed->element->axial_force(), analysis.control_force(),
+                1e-9 * expanded.yield_force);
+    ++comparison.steps;
+  }
+  EXPECT_EQ(comparison.steps + 1, reference.steps.size());
+  // the energy balance of the global analysis holds with the element's energies
+  EXPECT_LT(analysis.energy().relative_error(), 2e-2);
+  return comparison;
+}
+
+TEST(BRBElementCondensed, AgreesWithTheExpandedModelOnABareCoreCyclicTest) {
+  // Same equations, solved nested (condensed) or at once (expanded): the forces must agree
+  // to the solvers' tolerance (1e-9 relative each), here asked to 1e-6 of the peak force.
+  // Tension to 1.5 dy and compression past the bare core's buckling load (about 3 kN).
+  const Comparison comparison = compare_condensed_and_expanded(small_bare_core(), {0.5, 1.5});
+  ASSERT_GT(comparison.steps, 20u);
+  EXPECT_LT(comparison.largest_difference, 1e-6 * comparison.largest_force)
+      << comparison.largest_difference << " N of " << comparison.largest_force << " N";
+}
+
+} // namespace
+} // namespace brb::analysis
