@@ -308,9 +308,9 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
       constant_load_.lpNorm<Eigen::Infinity>() +
       (kinematic_control() ? 0.0
                            : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
-  const double round_off_floor = settings_.position_round_off * model_extent_ *
-                                 tangent_.diagonal().cwiseAbs().maxCoeff() /
-                                 settings_.relative_force_tolerance;
+  const double stiffest = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().maxCoeff() : 0.0;
+  const double round_off_floor =
+      settings_.position_round_off * model_extent_ * stiffest / settings_.relative_force_tolerance;
   const double scale = force_scale_ + load + round_off_floor + 1e-6;
   return residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale;
 }
@@ -450,13 +450,15 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
         load[static_cast<Eigen::Index>(e)] = (to - from) * reference_load_[free_dofs_[e]];
       }
     }
-    if (!pattern_analysed_) {
-      solver_.analyzePattern(tangent_);
-      pattern_analysed_ = true;
-    }
-    solver_.factorize(tangent_);
     set_control_value(to);
-    if (solver_.info() == Eigen::Success) {
+    if (!free_dofs_.empty()) { // (nothing to predict when every DOF is prescribed)
+      if (!pattern_analysed_) {
+        solver_.analyzePattern(tangent_);
+        pattern_analysed_ = true;
+      }
+      solver_.factorize(tangent_);
+    }
+    if (!free_dofs_.empty() && solver_.info() == Eigen::Success) {
       const Eigen::VectorXd predictor = solver_.solve(load);
       if (predictor.allFinite())
         apply_free_increment(predictor, 1.0);
@@ -553,7 +555,7 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   const element::ElementEnergy before = element_energy();
   const double control_force_before = internal_force_.dot(control_rate_);
   Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
-  const double stiffness = tangent_.diagonal().cwiseAbs().mean();
+  const double stiffness = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().mean() : 0.0;
   double viscosity = 1e-3 * stiffness;
   for (int pseudo_step = 0; pseudo_step < settings_.fallback_iterations; ++pseudo_step) {
     const std::vector<NodeConfiguration> start = trial_;
