@@ -22,9 +22,9 @@ BraceTruss::BraceTruss(std::array<int, 2> nodes, const Vector3& position_i,
       // one material point over the yielding zone: its characteristic length is L_y
       law_((parameters.validate(), parameters.steel), parameters.yielding_length),
       committed_(law_.initial_state()), trial_(committed_) {
-  if (!(initial_length_ > parameters.yielding_length))
-    throw ParameterError("yielding_length",
-                         "the yielding length must be shorter than the brace (outer nodes apart)");
+  if (!(parameters.yielding_length <= initial_length_ * (1.0 + 1e-12)))
+    throw ParameterError("yielding_length", "the yielding length must not exceed the brace's "
+                                            "length (the outer nodes' distance)");
 }
 
 double BraceTruss::elastic_stiffness() const {
