@@ -29,8 +29,8 @@ double BraceIndicatorTracker::max_lateral_displacement(const Positions& position
   double largest = 0.0;
   for (std::size_t n = 0; n < brace_->nodes.size(); ++n) {
     const element::Vector3 motion = position(brace_->nodes[n]) - initial_positions_[n];
-    largest = std::max(largest, std::hypot(motion.dot(brace_->axes.col(1)),
-                                           motion.dot(brace_->axes.col(2))));
+    largest = std::max(
+        largest, std::hypot(motion.dot(brace_->axes.col(1)), motion.dot(brace_->axes.col(2))));
   }
   return largest;
 }
@@ -71,7 +71,8 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     }
     for (std::size_t s = 0; s < casing.nodes.size(); ++s) {
       const int casing_node = casing.nodes[s];
-      const Eigen::Vector2d casing_motion = lateral_of(casing_node, model_->coordinates(casing_node));
+      const Eigen::Vector2d casing_motion =
+          lateral_of(casing_node, model_->coordinates(casing_node));
       casing_lateral = std::max(casing_lateral, casing_motion.norm());
       const int core_node = casing.core_nodes[s];
       relative.push_back(lateral_of(core_node, model_->coordinates(core_node)) - casing_motion);
@@ -123,7 +124,8 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
 
   const double elastic_stiffness = brace.yield_force / brace.yield_deformation;
   indicators.cumulative_inelastic_deformation +=
-      std::abs((deformation - previous_deformation_) - (force - previous_force_) / elastic_stiffness) /
+      std::abs((deformation - previous_deformation_) -
+               (force - previous_force_) / elastic_stiffness) /
       brace.yield_deformation;
   previous_deformation_ = deformation;
   previous_force_ = force;

@@ -37,8 +37,8 @@ void BRBElement::restore_committed_internal_state() {
   work_is_committed_ = true;
 }
 
-bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration,
-                          Eigen::VectorXd& force, Eigen::MatrixXd& tangent, std::string& failure) {
+bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                          Eigen::MatrixXd& tangent, std::string& failure) {
   const Matrix3& axes = placement_.axes;
   std::array<NodeConfiguration, 2> local;
   for (std::size_t k = 0; k < 2; ++k) {
@@ -73,7 +73,8 @@ bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration,
   }
   for (int a = 0; a < 4; ++a) {
     for (int b = 0; b < 4; ++b)
-      tangent.block<3, 3>(3 * a, 3 * b) = axes * condensed.block<3, 3>(3 * a, 3 * b) * axes.transpose();
+      tangent.block<3, 3>(3 * a, 3 * b) =
+          axes * condensed.block<3, 3>(3 * a, 3 * b) * axes.transpose();
   }
   trial_ = outputs_of_internal_state();
   return true;

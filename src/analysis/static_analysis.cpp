@@ -86,8 +86,8 @@ void StaticAnalysis::set_motion_target(std::span<const NodeConfiguration> target
     const int node = motion_nodes_[k];
     motion_start_[k] = committed_[node];
     motion_target_[k] = targets[k];
-    motion_rotation_[k] = element::vector_from_rotation(
-        targets[k].rotation * committed_[node].rotation.transpose());
+    motion_rotation_[k] =
+        element::vector_from_rotation(targets[k].rotation * committed_[node].rotation.transpose());
     // d x / ds = x_target - x_0; the spin rate of exp(s theta) R_0 is theta (global)
     const element::Vector3 travel = targets[k].position - committed_[node].position;
     for (int i = 0; i < 3; ++i) {
@@ -165,7 +165,8 @@ void StaticAnalysis::number_equations() {
   prescribed_index_.assign(model_.dof_count(), -1);
   for (std::size_t k = 0; k < motion_nodes_.size(); ++k) {
     for (int dof = 0; dof < kDofPerNode; ++dof)
-      prescribed_index_[kDofPerNode * motion_nodes_[k] + dof] = kDofPerNode * static_cast<int>(k) + dof;
+      prescribed_index_[kDofPerNode * motion_nodes_[k] + dof] =
+          kDofPerNode * static_cast<int>(k) + dof;
   }
   free_dofs_.clear();
   for (int node = 0; node < model_.node_count(); ++node) {
@@ -292,8 +293,8 @@ void StaticAnalysis::set_control_value(double value) {
   }
   for (std::size_t k = 0; k < motion_nodes_.size(); ++k) {
     NodeConfiguration& node = trial_[motion_nodes_[k]];
-    node.position =
-        motion_start_[k].position + value * (motion_target_[k].position - motion_start_[k].position);
+    node.position = motion_start_[k].position +
+                    value * (motion_target_[k].position - motion_start_[k].position);
     node.rotation =
         element::rotation_from_vector(value * motion_rotation_[k]) * motion_start_[k].rotation;
   }
@@ -306,8 +307,7 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
   // element turns into force. The tolerance must stay above both.
   const double load =
       constant_load_.lpNorm<Eigen::Infinity>() +
-      (kinematic_control() ? 0.0
-                           : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
+      (kinematic_control() ? 0.0 : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
   const double stiffest = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().maxCoeff() : 0.0;
   const double round_off_floor =
       settings_.position_round_off * model_extent_ * stiffest / settings_.relative_force_tolerance;

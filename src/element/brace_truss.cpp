@@ -28,14 +28,13 @@ BraceTruss::BraceTruss(std::array<int, 2> nodes, const Vector3& position_i,
 }
 
 double BraceTruss::elastic_stiffness() const {
-  return 1.0 / (parameters_.yielding_length /
-                    (parameters_.steel.youngs_modulus * parameters_.core_area) +
-                parameters_.end_flexibility);
+  return 1.0 /
+         (parameters_.yielding_length / (parameters_.steel.youngs_modulus * parameters_.core_area) +
+          parameters_.end_flexibility);
 }
 
-bool BraceTruss::evaluate(std::span<const NodeConfiguration> configuration,
-                          Eigen::VectorXd& force, Eigen::MatrixXd& tangent,
-                          std::string& failure) {
+bool BraceTruss::evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                          Eigen::MatrixXd& tangent, std::string& failure) {
   const Vector3 chord = configuration[1].position - configuration[0].position;
   const double length = chord.norm();
   if (!(length > 0.0)) {
@@ -57,8 +56,8 @@ bool BraceTruss::evaluate(std::span<const NodeConfiguration> configuration,
   const double tolerance = 1e-12 * initial_length_;
   bool converged = false;
   for (int iteration = 0; iteration < 50; ++iteration) {
-    const double residual = strain * yielding_length + flexibility * area * response.stress -
-                            deformation_;
+    const double residual =
+        strain * yielding_length + flexibility * area * response.stress - deformation_;
     slope = yielding_length + flexibility * area * response.tangent;
     if (std::abs(residual) <= tolerance) {
       converged = true;

@@ -336,10 +336,9 @@ model::ElementSpec read_element(const JsonValue& object) {
 model::BraceSpec parse_brace(std::string_view json_text, const std::string& source) {
   const nlohmann::json document = parse_json(json_text, source);
   const JsonValue root(document, source);
-  root.expect_object(
-      {"name", "units", "core", "transition", "connection", "ends", "imperfection", "casing",
-       "element"},
-      "a brace object");
+  root.expect_object({"name", "units", "core", "transition", "connection", "ends", "imperfection",
+                      "casing", "element"},
+                     "a brace object");
   model::BraceSpec spec;
   if (const auto name = root.find("name"))
     spec.name = name->string("brace name");

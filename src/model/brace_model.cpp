@@ -346,8 +346,9 @@ element::BraceTrussParameters truss_parameters(const BraceSpec& spec) {
   parameters.yielding_length = spec.yielding_length;
   for (const auto* zone : {&spec.transition, &spec.connection}) {
     if (*zone) {
-      parameters.end_flexibility += 2.0 * (*zone)->length /
-                                    (spec.steel.youngs_modulus * (*zone)->section.mesh().total_area());
+      parameters.end_flexibility +=
+          2.0 * (*zone)->length /
+          (spec.steel.youngs_modulus * (*zone)->section.mesh().total_area());
     }
   }
   return parameters;
@@ -384,13 +385,13 @@ BraceHandles add_brace_to_model(Model& model, const BraceSpec& spec, int start_n
   check(start_node >= 0 && start_node < model.node_count() && end_node >= 0 &&
             end_node < model.node_count() && start_node != end_node,
         "element/nodes", "two distinct nodes of the model");
-  const BracePlacement placement = BracePlacement::between(
-      model.coordinates(start_node), model.coordinates(end_node), section_z);
+  const BracePlacement placement = BracePlacement::between(model.coordinates(start_node),
+                                                           model.coordinates(end_node), section_z);
   const double distance = (model.coordinates(end_node) - model.coordinates(start_node)).norm();
   const double total = spec.total_length();
   check(std::abs(distance - total) <= 1e-9 * total, "element/nodes",
-        "the outer nodes must be the brace's length apart (" + std::to_string(total) +
-            " mm; got " + std::to_string(distance) + " mm)");
+        "the outer nodes must be the brace's length apart (" + std::to_string(total) + " mm; got " +
+            std::to_string(distance) + " mm)");
   return place(model, spec, imperfection_offsets(spec), placement,
                std::array<int, 2>{start_node, end_node});
 }

@@ -48,8 +48,7 @@ TEST(BRBElementCondensed, TangentMatchesCentralDifferencesOfTheCondensedForces) 
   tight.relative_force_tolerance = 1e-12;
   tight.position_round_off = 1e-16;
   const double length = spec.total_length();
-  BRBElement element({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec, std::nullopt,
-                     tight);
+  BRBElement element({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec, std::nullopt, tight);
   const double dy = element.internal_brace().yield_deformation;
   const auto committed = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
                                                    Vector3(2.0 * dy, 0.0, 0.0), Vector3::Zero());
@@ -57,9 +56,9 @@ TEST(BRBElementCondensed, TangentMatchesCentralDifferencesOfTheCondensedForces) 
   element.commit();
   ASSERT_GT(element.axial_force(), element.internal_brace().yield_force);
 
-  std::array<NodeConfiguration, 2> base = test::outer_configuration(
-      Vector3::Zero(), Matrix3::Identity(), length, Vector3(2.3 * dy, 0.4, -0.3),
-      Vector3(1e-3, -2e-3, 1.5e-3));
+  std::array<NodeConfiguration, 2> base =
+      test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                Vector3(2.3 * dy, 0.4, -0.3), Vector3(1e-3, -2e-3, 1.5e-3));
   base[0].rotation = element::rotation_from_vector(Vector3(0.5e-3, 1e-3, -0.5e-3));
   const Evaluation at_base = evaluate(element, base);
   ASSERT_TRUE(at_base.ok) << at_base.failure;
@@ -122,8 +121,8 @@ TEST(BRBElementCondensed, RotatedBraceGivesTheAxisAlignedResponse) {
   for (const double multiple : {0.5, 1.5, 3.0, 1.0, -0.5, -1.0, -1.5, 0.0}) {
     const Vector3 motion(multiple * dy, 0.0, 0.0);
     const Vector3 spin(0.0, 1e-4 * multiple, 0.0);
-    const auto a = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length, motion,
-                                             spin);
+    const auto a =
+        test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length, motion, spin);
     const auto r = test::outer_configuration(start, turn, length, motion, spin);
     const Evaluation ea = evaluate(aligned, a);
     const Evaluation er = evaluate(rotated, r);
@@ -192,8 +191,8 @@ Comparison compare_condensed_and_expanded(const model::BraceSpec& spec,
   NewtonSettings tight;
   tight.relative_force_tolerance = 1e-12;
   tight.position_round_off = 1e-16;
-  const CyclicTestResult reference = run_cyclic_test(
-      expanded, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, tight);
+  const CyclicTestResult reference = run_cyclic_test(expanded, protocol.deformation, protocol.cycle,
+                                                     protocol.cycle_amplitude, tight);
   EXPECT_TRUE(reference.completed) << reference.stop_reason;
 
   auto condensed = test::condensed_brace_model(spec, tight);
@@ -301,8 +300,8 @@ TEST(BRBElementExpanded, BraceAddedInAnyOrientationMatchesTheCondensedElement) {
   for (const double multiple : {0.5, 2.0, 0.0, -0.5, -1.0, 0.5}) {
     const Vector3 motion(multiple * dy, 0.1 * multiple, 0.0);
     const Vector3 spin(2e-4 * multiple, 0.0, -1e-4);
-    const auto aligned = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
-                                                   motion, spin);
+    const auto aligned =
+        test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length, motion, spin);
     const auto rotated = test::outer_configuration(start, turn, length, motion, spin);
     const Evaluation reference = evaluate(condensed, aligned);
     ASSERT_TRUE(reference.ok) << reference.failure;

@@ -48,8 +48,7 @@ TEST(BraceTruss, ElasticStiffnessIsTheSeriesFormulaOfTheZones) {
   std::string failure;
   ASSERT_TRUE(truss.evaluate(nodes, force, tangent, failure)) << failure;
   EXPECT_NEAR(truss.axial_force(), deformation / flexibility, 1e-9 * deformation / flexibility);
-  EXPECT_NEAR(axis.dot(tangent.block<3, 3>(6, 6) * axis), 1.0 / flexibility,
-              1e-9 / flexibility);
+  EXPECT_NEAR(axis.dot(tangent.block<3, 3>(6, 6) * axis), 1.0 / flexibility, 1e-9 / flexibility);
   // end zones elastic: the core takes Delta - N f_e
   const double end_zones = flexibility - spec.yielding_length / (E * mesh_area(spec.core_section));
   EXPECT_NEAR(truss.core_strain() * spec.yielding_length,
@@ -96,11 +95,11 @@ TEST(BraceTruss, CyclicTestFollowsTheUniaxialSteelLawOnItsCoreStrain) {
     const auto response = law.evaluate(state, strain);
     state = response.state;
     const double force = parameters.core_area * response.stress;
-    largest_force_error =
-        std::max(largest_force_error, std::abs(analysis.control_force() - force));
-    largest_split_error = std::max(
-        largest_split_error, std::abs(strain * parameters.yielding_length +
-                                      force * parameters.end_flexibility - protocol.deformation[k]));
+    largest_force_error = std::max(largest_force_error, std::abs(analysis.control_force() - force));
+    largest_split_error =
+        std::max(largest_split_error,
+                 std::abs(strain * parameters.yielding_length + force * parameters.end_flexibility -
+                          protocol.deformation[k]));
   }
   EXPECT_LT(largest_force_error, 1e-9 * brace.yield_force);
   EXPECT_LT(largest_split_error, 1e-9 * dy);

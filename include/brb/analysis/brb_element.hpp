@@ -88,9 +88,9 @@ private:
   std::array<int, 2> nodes_;
   model::BracePlacement placement_;
   double length_ = 0.0;
-  model::BraceModel work_;      ///< internal model the nested solver moves (local axes)
+  model::BraceModel work_;            ///< internal model the nested solver moves (local axes)
   model::BraceModel committed_model_; ///< its twin: the committed element states
-  StaticAnalysis analysis_;     ///< nested solver on work_.model
+  StaticAnalysis analysis_;           ///< nested solver on work_.model
   AnalysisPathState committed_path_;
   bool work_is_committed_ = true;
   BraceIndicatorTracker tracker_;

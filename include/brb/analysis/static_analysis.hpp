@@ -205,9 +205,9 @@ private:
   std::vector<element::NodeConfiguration> motion_start_;
   std::vector<element::NodeConfiguration> motion_target_;
   std::vector<element::Vector3> motion_rotation_;
-  std::vector<int> prescribed_index_; // global DOF -> prescribed DOF index or -1
-  Eigen::MatrixXd tangent_free_prescribed_;      // K_fp
-  Eigen::MatrixXd tangent_prescribed_free_;      // K_pf
+  std::vector<int> prescribed_index_;             // global DOF -> prescribed DOF index or -1
+  Eigen::MatrixXd tangent_free_prescribed_;       // K_fp
+  Eigen::MatrixXd tangent_prescribed_free_;       // K_pf
   Eigen::MatrixXd tangent_prescribed_prescribed_; // K_pp
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
   bool pattern_analysed_ = false;

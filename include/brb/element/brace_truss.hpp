@@ -21,9 +21,9 @@ namespace brb::element {
 
 struct BraceTrussParameters {
   material::SteelParameters steel;
-  double core_area = 0.0;        ///< yielding core's area A (mm^2)
-  double yielding_length = 0.0;  ///< L_y (mm)
-  double end_flexibility = 0.0;  ///< sum over the end zones of L_i / (E A_i) (mm/N), >= 0
+  double core_area = 0.0;       ///< yielding core's area A (mm^2)
+  double yielding_length = 0.0; ///< L_y (mm)
+  double end_flexibility = 0.0; ///< sum over the end zones of L_i / (E A_i) (mm/N), >= 0
 
   /// Throws ParameterError naming the key (core_area, yielding_length, end_flexibility).
   void validate() const;

@@ -46,7 +46,7 @@ public:
 
 private:
   std::array<int, 2> nodes_;
-  Vector3 reference_offset_; ///< X_j - X_i
+  Vector3 reference_offset_;        ///< X_j - X_i
   Matrix3 translational_stiffness_; ///< Q diag(k_u) Q^T (global)
   Matrix3 rotational_stiffness_;    ///< Q diag(k_r) Q^T (global)
   Vector3 spring_force_ = Vector3::Zero();

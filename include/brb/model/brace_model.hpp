@@ -66,17 +66,17 @@ struct BracePlacement {
 struct BraceHandles {
   Vector3 origin = Vector3::Zero();                     ///< position of the start node
   element::Matrix3 axes = element::Matrix3::Identity(); ///< axis, section y, section z
-  int start_node = 0;                 ///< start outer node (work point)
-  int end_node = 0;                   ///< end outer node
-  std::vector<int> nodes;             ///< all nodes from start to end
-  std::vector<CoreBeam*> beams;       ///< all elements from start to end
-  std::vector<bool> in_yielding_zone; ///< per element
-  double core_area = 0.0;             ///< mm^2
-  double yield_force = 0.0;           ///< fy A_core (N)
+  int start_node = 0;                                   ///< start outer node (work point)
+  int end_node = 0;                                     ///< end outer node
+  std::vector<int> nodes;                               ///< all nodes from start to end
+  std::vector<CoreBeam*> beams;                         ///< all elements from start to end
+  std::vector<bool> in_yielding_zone;                   ///< per element
+  double core_area = 0.0;                               ///< mm^2
+  double yield_force = 0.0;                             ///< fy A_core (N)
   /// Axial deformation between the outer nodes at first yield of the core (mm): the series
   /// flexibility of the zones, P_y sum L / (E A).
   double yield_deformation = 0.0;
-  std::optional<CasingModel> casing; ///< present when the spec has a casing
+  std::optional<CasingModel> casing;    ///< present when the spec has a casing
   element::BraceTruss* truss = nullptr; ///< the `truss` fidelity's element (then no beams)
   /// Things the user should know, said once each (e.g. a damage onset stress lowered because
   /// the elements are too long for the softening, DESIGN.md section 3).
