@@ -170,6 +170,36 @@ TEST(BRBElementCondensed, RevertKeepsTheCommittedStateAndEvaluationsDoNotAccumul
   EXPECT_EQ(element.energy().dissipated, 0.0);
 }
 
+TEST(BRBElementCondensed, InternalFailureIsReportedAndLeavesTheCommittedStateAlone) {
+  // A nested solver allowed no Newton iteration, no cut and no pseudo-time step cannot reach
+  // a yielded state: evaluate() must say why and keep the committed state, so that the
+  // committed configuration still evaluates to the committed force.
+  const model::BraceSpec spec = small_bare_core();
+  const double length = spec.total_length();
+  NewtonSettings helpless;
+  helpless.max_iterations = 0;
+  helpless.max_halvings = 0;
+  helpless.fallback_iterations = 0;
+  BRBElement element({0, 1}, Vector3::Zero(), Vector3(length, 0.0, 0.0), spec, std::nullopt,
+                     helpless);
+  const auto rest = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                              Vector3::Zero(), Vector3::Zero());
+  const Evaluation at_rest = evaluate(element, rest);
+  ASSERT_TRUE(at_rest.ok) << at_rest.failure; // nothing to solve
+  element.commit();
+  const double dy = element.internal_brace().yield_deformation;
+  const auto yielded = test::outer_configuration(Vector3::Zero(), Matrix3::Identity(), length,
+                                                 Vector3(3.0 * dy, 0.0, 0.0), Vector3::Zero());
+  const Evaluation failed = evaluate(element, yielded);
+  EXPECT_FALSE(failed.ok);
+  EXPECT_NE(failed.failure.find("BRB element (condensed)"), std::string::npos) << failed.failure;
+  element.revert_to_committed();
+  const Evaluation again = evaluate(element, rest);
+  ASSERT_TRUE(again.ok) << again.failure;
+  EXPECT_LT(again.force.norm(), 1e-6);
+  EXPECT_EQ(element.energy().dissipated, 0.0);
+}
+
 /// Force of the condensed element in a global model and of the expanded model, step by step
 /// through a protocol at the given multiples of dy (steps of dy / 10).
 struct Comparison {
