@@ -248,6 +248,18 @@ Comparison compare_condensed_and_expanded(const model::BraceSpec& spec,
     ++comparison.steps;
   }
   EXPECT_EQ(comparison.steps + 1, reference.steps.size());
+  // the element's indicators come from the same code as the cyclic test's
+  const BraceIndicators& inside_indicators = condensed->element->indicators();
+  const BraceIndicators& outside_indicators = reference.indicators;
+  EXPECT_NEAR(inside_indicators.max_core_lateral_displacement,
+              outside_indicators.max_core_lateral_displacement,
+              1e-6 * outside_indicators.max_core_lateral_displacement + 1e-9);
+  EXPECT_EQ(inside_indicators.max_buckling_half_waves, outside_indicators.max_buckling_half_waves);
+  EXPECT_NEAR(inside_indicators.cumulative_inelastic_deformation,
+              outside_indicators.cumulative_inelastic_deformation,
+              1e-6 * outside_indicators.cumulative_inelastic_deformation);
+  EXPECT_NEAR(inside_indicators.max_mortar_damage, outside_indicators.max_mortar_damage, 1e-6);
+  EXPECT_EQ(inside_indicators.global_buckling, outside_indicators.global_buckling);
   // the energy balance of the global analysis holds with the element's energies
   if (std::getenv("BRB_DEBUG")) {
     const auto& e = analysis.energy();
