@@ -2,8 +2,6 @@
 // central differences of its own forces, objectivity (a rotated brace gives the axis-aligned
 // response), commit / revert semantics, and agreement with the expanded brace model.
 #include "brb/analysis/brb_element.hpp"
-#include "brb/analysis/cyclic_test.hpp"
-#include "brb/io/protocol.hpp"
 
 #include "support/brace_fixtures.hpp"
 #include "support/brb_element_fixtures.hpp"
@@ -11,8 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace brb::analysis {
 namespace {
@@ -94,9 +90,6 @@ TEST(BRBElementCondensed, TangentMatchesCentralDifferencesOfTheCondensedForces) 
       }
     return (a - b).norm() / b.norm();
   };
-  if (std::getenv("BRB_DEBUG"))
-    std::printf("%g %g %g %g\n", block_error(0, 0), block_error(0, 3), block_error(3, 0),
-                block_error(3, 3));
   EXPECT_LT(block_error(0, 0), 1e-5);
   EXPECT_LT(block_error(0, 3), 1e-5);
   EXPECT_LT(block_error(3, 0), 1e-5);
@@ -200,114 +193,13 @@ TEST(BRBElementCondensed, InternalFailureIsReportedAndLeavesTheCommittedStateAlo
   EXPECT_EQ(element.energy().dissipated, 0.0);
 }
 
-/// Force of the condensed element in a global model and of the expanded model, step by step
-/// through a protocol at the given multiples of dy (steps of dy / 10).
-struct Comparison {
-  double largest_difference = 0.0; ///< N, largest |F_condensed - F_expanded|
-  double largest_force = 0.0;      ///< N, largest |F_expanded|
-  std::size_t steps = 0;
-};
-
-Comparison compare_condensed_and_expanded(const model::BraceSpec& spec,
-                                          const std::vector<double>& multiples_of_dy) {
-  model::BraceModel expanded = model::build_brace_model(spec);
-  const double dy = expanded.yield_deformation;
-  std::vector<io::CycleGroup> groups;
-  for (const double multiple : multiples_of_dy)
-    groups.push_back({multiple * dy, 1});
-  const io::LoadingProtocol protocol = io::cyclic_protocol("comparison", groups, dy / 10.0);
-  // Both converged well below the compared difference: the default residual floor (1e-14
-  // of the model's size times the stiffest element) is 0.25 N here.
-  NewtonSettings tight;
-  tight.relative_force_tolerance = 1e-12;
-  tight.position_round_off = 1e-16;
-  const CyclicTestResult reference = run_cyclic_test(expanded, protocol.deformation, protocol.cycle,
-                                                     protocol.cycle_amplitude, tight);
-  EXPECT_TRUE(reference.completed) << reference.stop_reason;
-
-  auto condensed = test::condensed_brace_model(spec, tight);
-  StaticAnalysis analysis(condensed->model, tight);
-  analysis.use_displacement_control(condensed->end_node, model::ux);
-  Comparison comparison;
-  for (std::size_t k = 1; k < reference.steps.size(); ++k) {
-    const StepReport report = analysis.step_to(protocol.deformation[k]);
-    EXPECT_TRUE(report.converged) << "step " << k << ": " << report.failure;
-    if (!report.converged)
-      break;
-    const double expected = reference.steps[k].force;
-    if (std::getenv("BRB_DEBUG"))
-      std::printf("%zu d %g Fc %.12g Fe %.12g diff %g sub %d/%d\n", k, protocol.deformation[k],
-                  analysis.control_force(), expected, analysis.control_force() - expected,
-                  report.substeps, reference.steps[k].substeps);
-    comparison.largest_difference =
-        std::max(comparison.largest_difference, std::abs(analysis.control_force() - expected));
-    comparison.largest_force = std::max(comparison.largest_force, std::abs(expected));
-    // the element's own axial force output is the same force (pinned ends, straight chord)
-    EXPECT_NEAR(condensed->element->axial_force(), analysis.control_force(),
-                1e-9 * expanded.yield_force);
-    ++comparison.steps;
-  }
-  EXPECT_EQ(comparison.steps + 1, reference.steps.size());
-  // the element's indicators come from the same code as the cyclic test's
-  const BraceIndicators& inside_indicators = condensed->element->indicators();
-  const BraceIndicators& outside_indicators = reference.indicators;
-  EXPECT_NEAR(inside_indicators.max_core_lateral_displacement,
-              outside_indicators.max_core_lateral_displacement,
-              1e-6 * outside_indicators.max_core_lateral_displacement + 1e-9);
-  EXPECT_EQ(inside_indicators.max_buckling_half_waves, outside_indicators.max_buckling_half_waves);
-  EXPECT_NEAR(inside_indicators.cumulative_inelastic_deformation,
-              outside_indicators.cumulative_inelastic_deformation,
-              1e-6 * outside_indicators.cumulative_inelastic_deformation);
-  EXPECT_NEAR(inside_indicators.max_mortar_damage, outside_indicators.max_mortar_damage, 1e-6);
-  EXPECT_EQ(inside_indicators.global_buckling, outside_indicators.global_buckling);
-  // the energy balance of the global analysis holds with the element's energies
-  if (std::getenv("BRB_DEBUG")) {
-    const auto& e = analysis.energy();
-    const auto& r = reference.energy_balance;
-    std::printf("condensed W %g S %g D %g J %g err %g | expanded W %g S %g D %g J %g err %g\n",
-                e.external_work, e.stored, e.dissipated, e.released_in_jumps, e.relative_error(),
-                r.external_work, r.stored, r.dissipated, r.released_in_jumps, r.relative_error());
-  }
-  // The element's energy (stored + dissipated, its internal jumps counted as dissipated) is
-  // the expanded model's stored + dissipated + released in jumps: the same energy, booked
-  // inside the element. (Each model's own balance W = S + D + J holds only to the step
-  // size's accuracy, a few % here; that error is the trapezoidal work, not the element.)
-  const EnergyBalance& inside = analysis.energy();
-  const EnergyBalance& outside = reference.energy_balance;
-  EXPECT_NEAR(inside.stored + inside.dissipated,
-              outside.stored + outside.dissipated + outside.released_in_jumps,
-              1e-3 * outside.external_work);
-  return comparison;
-}
-
 TEST(BRBElementCondensed, AgreesWithTheExpandedModelOnABareCoreCyclicTest) {
   // Same equations, solved nested (condensed) or at once (expanded): the forces must agree
   // to the solvers' tolerance (1e-9 relative each), here asked to 1e-6 of the peak force.
   // Tension to 1.5 dy and compression past the bare core's buckling load (about 3 kN).
-  const Comparison comparison = compare_condensed_and_expanded(small_bare_core(), {0.5, 1.5});
+  const test::Comparison comparison =
+      test::compare_condensed_and_expanded(small_bare_core(), {0.5, 1.5});
   ASSERT_GT(comparison.steps, 20u);
-  EXPECT_LT(comparison.largest_difference, 1e-6 * comparison.largest_force)
-      << comparison.largest_difference << " N of " << comparison.largest_force << " N";
-}
-
-TEST(BRBElementCondensed, AgreesWithTheExpandedModelOnARestrainedCoreAtSmallAmplitude) {
-  // The core in its casing (gap 0.5 mm, mortar bearing, friction, stopper), cycles at 0.5
-  // and 1 dy: the core bows into the gap and bears on the mortar in compression.
-  model::BraceSpec spec = test::girona_d3_bare_core(8, false);
-  model::CasingSpec casing;
-  casing.tube.shape = model::SectionShape::circular_tube;
-  casing.tube.diameter = 115.0;
-  casing.tube.wall = 3.0;
-  casing.tube.fibers_a = 1;
-  casing.tube.fibers_b = 12;
-  casing.tube_steel = spec.steel;
-  casing.mortar = {17520.0, 0.2, 50.0, 5.0, 0.1};
-  casing.fill_fibers_a = 1;
-  casing.fill_fibers_b = 12;
-  casing.gap_y = casing.gap_z = 0.5;
-  spec.casing = casing;
-  const Comparison comparison = compare_condensed_and_expanded(spec, {0.5, 1.0});
-  ASSERT_GT(comparison.steps, 30u);
   EXPECT_LT(comparison.largest_difference, 1e-6 * comparison.largest_force)
       << comparison.largest_difference << " N of " << comparison.largest_force << " N";
 }
