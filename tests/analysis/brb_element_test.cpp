@@ -1,7 +1,9 @@
 // The condensed BRB macro element (DESIGN.md section 4): its condensed tangent against
 // central differences of its own forces, objectivity (a rotated brace gives the axis-aligned
-// response), commit / revert semantics, and agreement with the expanded brace model.
+// response), commit / revert and failure semantics, agreement with the expanded brace model
+// (bare core here; the core in its casing in tests/slow), and the brace's placement.
 #include "brb/analysis/brb_element.hpp"
+#include "brb/material/parameter_error.hpp"
 
 #include "support/brace_fixtures.hpp"
 #include "support/brb_element_fixtures.hpp"
@@ -254,6 +256,40 @@ TEST(BRBElementExpanded, BraceAddedInAnyOrientationMatchesTheCondensedElement) {
       }
     }
   }
+}
+
+TEST(BracePlacement, AxesAreRightHandedWithSectionZAlongTheGivenVectorOrADefault) {
+  // Default: section z along global Z made orthogonal to the axis; for a brace along Z,
+  // global Y. A section z along the axis, or coincident nodes, is an error.
+  const auto check_axes = [](const model::BracePlacement& placement) {
+    EXPECT_LT((placement.axes.transpose() * placement.axes - Matrix3::Identity()).norm(), 1e-12);
+    EXPECT_NEAR(placement.axes.determinant(), 1.0, 1e-12);
+  };
+  const auto diagonal = model::BracePlacement::between(Vector3::Zero(), Vector3(3.0, 0.0, 4.0));
+  check_axes(diagonal);
+  EXPECT_LT((diagonal.axes.col(0) - Vector3(0.6, 0.0, 0.8)).norm(), 1e-12);
+  EXPECT_LT((diagonal.axes.col(2) - Vector3(-0.8, 0.0, 0.6)).norm(), 1e-12);
+  const auto vertical = model::BracePlacement::between(Vector3::Zero(), Vector3(0.0, 0.0, 5.0));
+  check_axes(vertical);
+  EXPECT_LT((vertical.axes.col(2) - Vector3::UnitY()).norm(), 1e-12);
+  const auto given = model::BracePlacement::between(Vector3::Zero(), Vector3(1.0, 0.0, 0.0),
+                                                    Vector3(0.0, 1.0, 1.0));
+  check_axes(given);
+  EXPECT_LT((given.axes.col(2) - Vector3(0.0, 1.0, 1.0).normalized()).norm(), 1e-12);
+  EXPECT_THROW(model::BracePlacement::between(Vector3::Zero(), Vector3(2.0, 0.0, 0.0),
+                                              Vector3(1.0, 0.0, 0.0)),
+               ParameterError);
+  EXPECT_THROW(model::BracePlacement::between(Vector3::Ones(), Vector3::Ones()), ParameterError);
+}
+
+TEST(BRBElementExpanded, OuterNodesNotTheBracesLengthApartAreRejected) {
+  const model::BraceSpec spec = small_bare_core();
+  model::Model global;
+  const int a = global.add_node(Vector3::Zero());
+  const int b = global.add_node(Vector3(0.9 * spec.total_length(), 0.0, 0.0));
+  EXPECT_THROW(model::add_brace_to_model(global, spec, a, b), ParameterError);
+  EXPECT_THROW(BRBElement({a, b}, global.coordinates(a), global.coordinates(b), spec),
+               ParameterError);
 }
 
 } // namespace
