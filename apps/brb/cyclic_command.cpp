@@ -49,12 +49,15 @@ std::string brace_name(const model::BraceSpec& spec, const fs::path& file) {
   return spec.name.empty() ? file.stem().string() : spec.name;
 }
 
-/// The brace's finite element model. A ParameterError (inconsistent geometry, named by its key
-/// in the brace schema, e.g. "core/yielding_length") becomes an InputError at that JSON path
-/// of `file` ("/core/yielding_length"), with the value found there.
+/// The brace's finite element model: the expanded full model, or the truss for
+/// "element": {"fidelity": "truss"} (the element mode only matters in frames). A ParameterError
+/// (inconsistent geometry, named by its key in the brace schema, e.g. "core/yielding_length")
+/// becomes an InputError at that JSON path of `file` ("/core/yielding_length"), with the value
+/// found there.
 model::BraceModel build_brace(const model::BraceSpec& spec, const fs::path& file) {
   try {
-    return model::build_brace_model(spec);
+    return spec.element.fidelity == model::Fidelity::truss ? model::build_brace_truss_model(spec)
+                                                           : model::build_brace_model(spec);
   } catch (const ParameterError& error) {
     throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
   }

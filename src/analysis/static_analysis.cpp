@@ -40,6 +40,7 @@ StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
   committed_internal_force_ = internal_force_;
   reference_load_ = Eigen::VectorXd::Zero(model_.dof_count());
   constant_load_ = Eigen::VectorXd::Zero(model_.dof_count());
+  control_rate_ = Eigen::VectorXd::Zero(model_.dof_count());
   number_equations();
   for (int node = 0; node < model_.node_count(); ++node) {
     model_extent_ = std::max(model_extent_, model_.coordinates(node).cwiseAbs().maxCoeff());
@@ -53,14 +54,100 @@ void StaticAnalysis::use_displacement_control(int node, model::Dof dof) {
   if (model_.is_fixed(node, dof))
     throw std::invalid_argument("the controlled DOF is restrained");
   displacement_control_ = {node, dof};
+  motion_nodes_.clear();
   control_value_ = committed_[node].position[dof] - model_.coordinates(node)[dof];
+  control_rate_.setZero();
+  control_rate_[model::Model::global_dof(node, dof)] = 1.0;
   number_equations();
+}
+
+void StaticAnalysis::use_prescribed_motion(std::vector<int> nodes) {
+  for (const int node : nodes) {
+    if (node < 0 || node >= model_.node_count())
+      throw std::invalid_argument("prescribed motion of a node the model does not have");
+  }
+  displacement_control_.reset();
+  motion_nodes_ = std::move(nodes);
+  motion_start_.clear();
+  for (const int node : motion_nodes_)
+    motion_start_.push_back(committed_[node]);
+  motion_target_ = motion_start_;
+  motion_rotation_.assign(motion_nodes_.size(), element::Vector3::Zero());
+  control_rate_.setZero();
+  control_value_ = 0.0;
+  number_equations();
+}
+
+void StaticAnalysis::set_motion_target(std::span<const NodeConfiguration> targets) {
+  if (targets.size() != motion_nodes_.size())
+    throw std::invalid_argument("set_motion_target: one target per prescribed node");
+  control_rate_.setZero();
+  for (std::size_t k = 0; k < motion_nodes_.size(); ++k) {
+    const int node = motion_nodes_[k];
+    motion_start_[k] = committed_[node];
+    motion_target_[k] = targets[k];
+    motion_rotation_[k] =
+        element::vector_from_rotation(targets[k].rotation * committed_[node].rotation.transpose());
+    // d x / ds = x_target - x_0; the spin rate of exp(s theta) R_0 is theta (global)
+    const element::Vector3 travel = targets[k].position - committed_[node].position;
+    for (int i = 0; i < 3; ++i) {
+      control_rate_[kDofPerNode * node + i] = travel[i];
+      control_rate_[kDofPerNode * node + 3 + i] = motion_rotation_[k][i];
+    }
+  }
+  control_value_ = 0.0;
+  control_force_ = committed_internal_force_.dot(control_rate_);
+}
+
+Eigen::MatrixXd StaticAnalysis::condensed_tangent() {
+  if (motion_nodes_.empty())
+    throw std::logic_error("condensed_tangent needs prescribed motion");
+  if (tangent_.rows() == 0)
+    return tangent_prescribed_prescribed_;
+  // K_ff was assembled at the converged state (the last assembly); factorize it afresh
+  // (the solver holds the factor of an earlier iterate).
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> factor;
+  factor.compute(tangent_);
+  if (factor.info() != Eigen::Success)
+    throw std::runtime_error("condensed tangent: singular internal tangent");
+  const Eigen::MatrixXd internal = factor.solve(tangent_free_prescribed_);
+  return tangent_prescribed_prescribed_ - tangent_prescribed_free_ * internal;
+}
+
+AnalysisPathState StaticAnalysis::path_state() const {
+  AnalysisPathState state;
+  state.nodes = committed_;
+  state.internal_force = committed_internal_force_;
+  state.control_value = control_value_;
+  state.control_force = control_force_;
+  state.stable = committed_stable_;
+  state.energy = energy_;
+  state.energy_error_sum = energy_error_sum_;
+  return state;
+}
+
+void StaticAnalysis::restore_path_state(const AnalysisPathState& state) {
+  if (state.nodes.size() != committed_.size())
+    throw std::invalid_argument("restore_path_state: the state is of another model");
+  committed_ = state.nodes;
+  trial_ = committed_;
+  committed_internal_force_ = state.internal_force;
+  internal_force_ = committed_internal_force_;
+  control_value_ = state.control_value;
+  control_force_ = state.control_force;
+  committed_stable_ = state.stable;
+  energy_ = state.energy;
+  energy_error_sum_ = state.energy_error_sum;
+  released_at_commit_ = energy_.released_in_jumps;
+  jump_work_.reset();
 }
 
 void StaticAnalysis::use_load_control(const Eigen::VectorXd& reference_load) {
   if (reference_load.size() != model_.dof_count())
     throw std::invalid_argument("load vector size");
   displacement_control_.reset();
+  motion_nodes_.clear();
+  control_rate_.setZero();
   reference_load_ = reference_load;
   control_value_ = 0.0;
   number_equations();
@@ -74,13 +161,20 @@ void StaticAnalysis::set_constant_load(const Eigen::VectorXd& load) {
 
 void StaticAnalysis::number_equations() {
   equation_.assign(model_.dof_count(), -1);
+  prescribed_index_.assign(model_.dof_count(), -1);
+  for (std::size_t k = 0; k < motion_nodes_.size(); ++k) {
+    for (int dof = 0; dof < kDofPerNode; ++dof)
+      prescribed_index_[kDofPerNode * motion_nodes_[k] + dof] =
+          kDofPerNode * static_cast<int>(k) + dof;
+  }
   free_dofs_.clear();
   for (int node = 0; node < model_.node_count(); ++node) {
     for (int dof = 0; dof < kDofPerNode; ++dof) {
       const auto d = static_cast<model::Dof>(dof);
       const bool controlled = displacement_control_ && displacement_control_->first == node &&
                               displacement_control_->second == d;
-      if (model_.is_fixed(node, d) || controlled)
+      if (model_.is_fixed(node, d) || controlled ||
+          prescribed_index_[model::Model::global_dof(node, d)] >= 0)
         continue;
       equation_[model::Model::global_dof(node, d)] = static_cast<int>(free_dofs_.size());
       free_dofs_.push_back(model::Model::global_dof(node, d));
@@ -92,13 +186,16 @@ void StaticAnalysis::number_equations() {
 bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
   internal_force_.setZero();
   force_scale_ = 0.0;
-  const int control_dof =
-      displacement_control_
-          ? model::Model::global_dof(displacement_control_->first, displacement_control_->second)
-          : -1;
+  const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
+  const auto prescribed_count = static_cast<Eigen::Index>(kDofPerNode * motion_nodes_.size());
   if (with_tangent) {
     triplets_.clear();
-    control_column_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
+    control_column_ = Eigen::VectorXd::Zero(free_count);
+    if (prescribed_count > 0) {
+      tangent_free_prescribed_ = Eigen::MatrixXd::Zero(free_count, prescribed_count);
+      tangent_prescribed_free_ = Eigen::MatrixXd::Zero(prescribed_count, free_count);
+      tangent_prescribed_prescribed_ = Eigen::MatrixXd::Zero(prescribed_count, prescribed_count);
+    }
   }
   for (const auto& element : model_.elements()) {
     const auto nodes = element->nodes();
@@ -117,15 +214,27 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
     for (int a = 0; a < element_dofs; ++a) {
       const int row = kDofPerNode * nodes[a / kDofPerNode] + a % kDofPerNode;
       internal_force_[row] += element_force_[a];
-      if (!with_tangent || equation_[row] < 0)
+      const int free_row = equation_[row];
+      const int prescribed_row = prescribed_index_[row];
+      if (!with_tangent || (free_row < 0 && prescribed_row < 0))
         continue;
       for (int b = 0; b < element_dofs; ++b) {
         const int column = kDofPerNode * nodes[b / kDofPerNode] + b % kDofPerNode;
         const double value = element_tangent_(a, b);
-        if (equation_[column] >= 0) {
-          triplets_.emplace_back(equation_[row], equation_[column], value);
-        } else if (column == control_dof) {
-          control_column_[equation_[row]] += value;
+        const int free_column = equation_[column];
+        const int prescribed_column = prescribed_index_[column];
+        if (free_row >= 0) {
+          if (free_column >= 0) {
+            triplets_.emplace_back(free_row, free_column, value);
+          } else {
+            control_column_[free_row] += value * control_rate_[column];
+            if (prescribed_column >= 0)
+              tangent_free_prescribed_(free_row, prescribed_column) += value;
+          }
+        } else if (free_column >= 0) {
+          tangent_prescribed_free_(prescribed_row, free_column) += value;
+        } else if (prescribed_column >= 0) {
+          tangent_prescribed_prescribed_(prescribed_row, prescribed_column) += value;
         }
       }
     }
@@ -140,7 +249,7 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
 
 Eigen::VectorXd StaticAnalysis::free_residual(double control) const {
   Eigen::VectorXd residual(static_cast<Eigen::Index>(free_dofs_.size()));
-  const bool load_control = !displacement_control_;
+  const bool load_control = !kinematic_control();
   for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
     const int dof = free_dofs_[e];
     double external = constant_load_[dof];
@@ -181,6 +290,13 @@ void StaticAnalysis::set_control_value(double value) {
     const auto [node, dof] = *displacement_control_;
     trial_[node].position[dof] = model_.coordinates(node)[dof] + value;
   }
+  for (std::size_t k = 0; k < motion_nodes_.size(); ++k) {
+    NodeConfiguration& node = trial_[motion_nodes_[k]];
+    node.position = motion_start_[k].position +
+                    value * (motion_target_[k].position - motion_start_[k].position);
+    node.rotation =
+        element::rotation_from_vector(value * motion_rotation_[k]) * motion_start_[k].rotation;
+  }
 }
 
 bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double control) const {
@@ -192,9 +308,10 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
     return true; // every DOF is restrained or prescribed: nothing to balance
   const double load =
       constant_load_.lpNorm<Eigen::Infinity>() +
-      (displacement_control_ ? 0.0 : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
-  const double round_off_floor = 1e-14 * model_extent_ * tangent_.diagonal().cwiseAbs().maxCoeff() /
-                                 settings_.relative_force_tolerance;
+      (kinematic_control() ? 0.0 : std::abs(control) * reference_load_.lpNorm<Eigen::Infinity>());
+  const double stiffest = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().maxCoeff() : 0.0;
+  const double round_off_floor =
+      settings_.position_round_off * model_extent_ * stiffest / settings_.relative_force_tolerance;
   const double scale = force_scale_ + load + round_off_floor + 1e-6;
   return residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale;
 }
@@ -324,9 +441,8 @@ void StaticAnalysis::commit(double control) {
   committed_ = trial_;
   committed_internal_force_ = internal_force_;
   control_value_ = control;
-  if (displacement_control_) {
-    control_force_ = internal_force_[model::Model::global_dof(displacement_control_->first,
-                                                              displacement_control_->second)];
+  if (kinematic_control()) {
+    control_force_ = internal_force_.dot(control_rate_);
   } else {
     control_force_ = reference_load_.dot(internal_force_);
   }
@@ -351,7 +467,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   Attempt attempt;
   if (assemble(true, attempt.failure)) {
     Eigen::VectorXd load;
-    if (displacement_control_) {
+    if (kinematic_control()) {
       load = -(to - from) * control_column_;
     } else {
       load = Eigen::VectorXd(static_cast<Eigen::Index>(free_dofs_.size()));
@@ -360,15 +476,14 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       }
     }
     set_control_value(to);
-    // (SparseLU does not return on an empty matrix: with no free DOF there is nothing to
-    // predict.)
-    if (tangent_.rows() > 0 && !pattern_analysed_) {
-      solver_.analyzePattern(tangent_);
-      pattern_analysed_ = true;
-    }
-    if (tangent_.rows() > 0)
+    if (!free_dofs_.empty()) { // (nothing to predict when every DOF is prescribed)
+      if (!pattern_analysed_) {
+        solver_.analyzePattern(tangent_);
+        pattern_analysed_ = true;
+      }
       solver_.factorize(tangent_);
-    if (tangent_.rows() > 0 && solver_.info() == Eigen::Success) {
+    }
+    if (!free_dofs_.empty() && solver_.info() == Eigen::Success) {
       const Eigen::VectorXd predictor = solver_.solve(load);
       if (predictor.allFinite())
         apply_free_increment(predictor, 1.0);
@@ -480,12 +595,9 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   // The energy released is what the jump takes out of the system: the drop of stored plus
   // material-dissipated energy, plus the work the (constant) loads do during it.
   const element::ElementEnergy before = element_energy();
-  const double control_force_before =
-      displacement_control_ ? internal_force_[model::Model::global_dof(
-                                  displacement_control_->first, displacement_control_->second)]
-                            : 0.0;
+  const double control_force_before = internal_force_.dot(control_rate_);
   Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
-  const double stiffness = tangent_.diagonal().cwiseAbs().mean();
+  const double stiffness = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().mean() : 0.0;
   double viscosity = 1e-3 * stiffness;
   for (int pseudo_step = 0; pseudo_step < settings_.fallback_iterations; ++pseudo_step) {
     const std::vector<NodeConfiguration> start = trial_;
@@ -505,20 +617,16 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
       for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
         const int dof = free_dofs_[e];
         const double load =
-            constant_load_[dof] + (displacement_control_ ? 0.0 : control * reference_load_[dof]);
+            constant_load_[dof] + (kinematic_control() ? 0.0 : control * reference_load_[dof]);
         load_work += load * travelled[static_cast<Eigen::Index>(e)];
       }
       energy_.released_in_jumps +=
           before.stored + before.dissipated + load_work - after.stored - after.dissipated;
       // External work of this step: the control moved first (on the old branch, ending at
       // control_force_before), then the jump at fixed control, under constant loads.
-      double control_work = 0.0;
-      if (displacement_control_) {
-        const int dof =
-            model::Model::global_dof(displacement_control_->first, displacement_control_->second);
-        control_work = 0.5 * (committed_internal_force_[dof] + control_force_before) *
-                       (control - control_value_);
-      }
+      const double control_work =
+          0.5 * (committed_internal_force_.dot(control_rate_) + control_force_before) *
+          (control - control_value_);
       jump_work_ = control_work + load_work;
       return total;
     }

@@ -9,14 +9,19 @@
 namespace brb::element {
 
 ZeroLengthSpring::ZeroLengthSpring(std::array<int, 2> nodes, const Vector3& position_i,
-                                   const Vector3& position_j, const SpringStiffness& stiffness)
-    : nodes_(nodes), reference_offset_(position_j - position_i),
-      translational_stiffness_(stiffness[0], stiffness[1], stiffness[2]),
-      rotational_stiffness_(stiffness[3], stiffness[4], stiffness[5]) {
+                                   const Vector3& position_j, const SpringStiffness& stiffness,
+                                   const Matrix3& axes)
+    : nodes_(nodes), reference_offset_(position_j - position_i) {
   for (const double value : stiffness) {
     if (!(value >= 0.0) || !std::isfinite(value))
       throw ParameterError("stiffness", "each spring stiffness must be >= 0 and finite");
   }
+  if (!axes.allFinite() || (axes.transpose() * axes - Matrix3::Identity()).norm() > 1e-9)
+    throw ParameterError("axes", "the spring axes must be orthonormal");
+  translational_stiffness_ =
+      axes * Vector3(stiffness[0], stiffness[1], stiffness[2]).asDiagonal() * axes.transpose();
+  rotational_stiffness_ =
+      axes * Vector3(stiffness[3], stiffness[4], stiffness[5]).asDiagonal() * axes.transpose();
 }
 
 bool ZeroLengthSpring::evaluate(std::span<const NodeConfiguration> configuration,
@@ -24,7 +29,7 @@ bool ZeroLengthSpring::evaluate(std::span<const NodeConfiguration> configuration
                                 std::string& failure) {
   // translations: stretch s = (x_j - x_i) - (X_j - X_i), f_j = K_u s, f_i = -f_j
   const Vector3 stretch = configuration[1].position - configuration[0].position - reference_offset_;
-  const Matrix3 translational = translational_stiffness_.asDiagonal();
+  const Matrix3& translational = translational_stiffness_;
   spring_force_ = translational * stretch;
 
   // rotations: theta = log(R_j R_i^T)
@@ -34,7 +39,7 @@ bool ZeroLengthSpring::evaluate(std::span<const NodeConfiguration> configuration
     failure = "zero-length spring: relative rotation out of the range of its logarithm";
     return false;
   }
-  const Matrix3 rotational = rotational_stiffness_.asDiagonal();
+  const Matrix3& rotational = rotational_stiffness_;
   const Vector3 potential_gradient = rotational * theta; // dV/dtheta
   const Matrix3 jacobian_inverse = inverse_left_jacobian(theta);
   spring_moment_ = jacobian_inverse.transpose() * potential_gradient;

@@ -336,14 +336,35 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) 
   return casing;
 }
 
+/// The "element" block: how the brace enters a model (fidelity and mode).
+model::ElementSpec read_element(const JsonValue& object) {
+  object.expect_object({"fidelity", "mode"}, "an element object {fidelity, mode}");
+  model::ElementSpec element;
+  if (const auto fidelity = object.find("fidelity")) {
+    if (fidelity->json().is_string() && fidelity->json().get<std::string>() == "auto") {
+      throw fidelity->error("fidelity \"auto\" is not available yet (its rule is still to be "
+                            "derived); choose \"full\" or \"truss\"");
+    }
+    element.fidelity = one_of<model::Fidelity>(
+        *fidelity, "element fidelity",
+        {{"full", model::Fidelity::full}, {"truss", model::Fidelity::truss}});
+  }
+  if (const auto mode = object.find("mode")) {
+    element.mode = one_of<model::ElementMode>(
+        *mode, "element mode",
+        {{"condensed", model::ElementMode::condensed}, {"expanded", model::ElementMode::expanded}});
+  }
+  return element;
+}
+
 } // namespace
 
 model::BraceSpec parse_brace(std::string_view json_text, const std::string& source) {
   const nlohmann::json document = parse_json(json_text, source);
   const JsonValue root(document, source);
-  root.expect_object(
-      {"name", "units", "core", "transition", "connection", "ends", "imperfection", "casing"},
-      "a brace object");
+  root.expect_object({"name", "units", "core", "transition", "connection", "ends", "imperfection",
+                      "casing", "element"},
+                     "a brace object");
   model::BraceSpec spec;
   if (const auto name = root.find("name"))
     spec.name = name->string("brace name");
@@ -428,6 +449,9 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
 
   if (const auto casing = root.find("casing"); casing && !casing->json().is_null()) {
     spec.casing = read_casing(*casing, spec.core_section);
+  }
+  if (const auto element = root.find("element")) {
+    spec.element = read_element(*element);
   }
   return spec;
 }

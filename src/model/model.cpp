@@ -19,6 +19,13 @@ void Model::fix_all(int node) {
   fixed_.at(node).fill(true);
 }
 
+void Model::copy_element_states_from(const Model& other) {
+  if (other.elements_.size() != elements_.size())
+    throw std::invalid_argument("copy_element_states_from: the models are not twins");
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    elements_[e]->copy_state_from(*other.elements_[e]);
+}
+
 void Model::check_element_nodes(const element::Element& element) const {
   for (const int node : element.nodes()) {
     if (node < 0 || node >= node_count()) {

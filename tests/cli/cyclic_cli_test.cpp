@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <set>
 #include <string>
@@ -330,6 +331,34 @@ TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
         (output / "summary.json").string(), std::string("completed")}) {
     EXPECT_NE(run.out.find(expected), std::string::npos) << expected << " not in:\n" << run.out;
   }
+}
+
+TEST(CyclicCli, TrussFidelityFollowsTheClosedFormBarLaw) {
+  // "element": {"fidelity": "truss"}: one co-rotational truss with the uniaxial steel law
+  // over the yielding length (no end zones here), so the force is the closed-form bar law
+  // at delta / L at every row.
+  const ScratchDirectory scratch;
+  json brace = test_brace();
+  brace["element"] = {{"fidelity", "truss"}, {"mode", "condensed"}};
+  const auto brace_file = scratch.write("brace.json", brace.dump(2));
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump(2));
+  const auto output = scratch.path() / "results";
+  const CliRun run = run_brb(cyclic_arguments(brace_file, protocol, output));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  std::vector<double> deformations;
+  for (const HysteresisRow& row : rows)
+    deformations.push_back(row.deformation);
+  const std::vector<double> bar_forces = uniaxial_bar_forces(deformations);
+  ASSERT_GT(rows.size(), 10u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_NEAR(rows[i].force, bar_forces[i], 1e-9 * kYieldForce) << "row " << i;
+    EXPECT_EQ(rows[i].max_lateral_displacement, 0.0);
+  }
+  const json summary = json::parse(std::ifstream(output / "summary.json"));
+  EXPECT_NEAR(summary.at("yield_deformation").get<double>(),
+              kYieldStress / kYoungsModulus * kCoreLength, 1e-12 * kCoreLength);
+  EXPECT_FALSE(summary.at("element").at("global_buckling").get<bool>());
 }
 
 TEST(CyclicCli, CsvHistoryIsCutIntoStepsOfMaxStepAndReplacesPreviousResults) {

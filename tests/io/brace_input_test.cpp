@@ -428,6 +428,30 @@ TEST(BraceExamples, EveryExampleBuildsAModelYieldingAtFyTimesTheCoreArea) {
   EXPECT_GE(examples, 2);
 }
 
+TEST(BraceInput, ElementBlockChoosesFidelityAndModeWithFullCondensedByDefault) {
+  const model::BraceSpec defaults = parse_brace(minimal_brace().dump(), "b.json");
+  EXPECT_EQ(defaults.element.fidelity, model::Fidelity::full);
+  EXPECT_EQ(defaults.element.mode, model::ElementMode::condensed);
+  json brace = minimal_brace();
+  brace["element"] = {{"fidelity", "truss"}, {"mode", "expanded"}};
+  const model::BraceSpec spec = parse_brace(brace.dump(), "b.json");
+  EXPECT_EQ(spec.element.fidelity, model::Fidelity::truss);
+  EXPECT_EQ(spec.element.mode, model::ElementMode::expanded);
+}
+
+TEST(BraceInput, AutoFidelityIsRejectedWithTheChoicesThereAre) {
+  json brace = minimal_brace();
+  brace["element"] = {{"fidelity", "auto"}};
+  try {
+    parse_brace(brace.dump(), "b.json");
+    FAIL() << "auto accepted";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("\"auto\" is not available yet"), std::string::npos) << message;
+    EXPECT_NE(message.find("\"truss\""), std::string::npos) << message;
+  }
+}
+
 // ---- Rejected inputs ----
 
 struct BadBrace {
@@ -462,6 +486,17 @@ TEST_P(BraceRejected, InputErrorNamesTheFileAndTheJsonPath) {
 INSTANTIATE_TEST_SUITE_P(
     BraceInputErrors, BraceRejected,
     ::testing::Values(
+        BadBrace{"element_fidelity_auto_not_yet",
+                 [](json& brace) { brace["element"] = {{"fidelity", "auto"}}; },
+                 "/element/fidelity"},
+        BadBrace{"element_fidelity_unknown",
+                 [](json& brace) { brace["element"] = {{"fidelity", "shell"}}; },
+                 "/element/fidelity"},
+        BadBrace{"element_mode_unknown",
+                 [](json& brace) { brace["element"] = {{"mode", "lumped"}}; }, "/element/mode"},
+        BadBrace{"element_unknown_key",
+                 [](json& brace) { brace["element"] = {{"fidelity", "full"}, {"order", 2}}; },
+                 "/element/order"},
         BadBrace{"negative_yielding_length",
                  [](json& brace) { brace["core"]["yielding_length"] = -2000.0; },
                  "/core/yielding_length"},

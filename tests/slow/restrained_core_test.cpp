@@ -80,7 +80,11 @@ TEST(RestrainedCore, CasingLetsTheCoreCarryCompressionUpToYield) {
   ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
   EXPECT_GT(-run.result.max_compression, 0.8 * run.brace.yield_force);
   EXPECT_GT(run.result.max_tension, run.brace.yield_force);
-  // and the casing holds: no global buckling, no crushed-through mortar
+  // and the casing holds: no global buckling, no crushed-through mortar.
+  // (Known fragility, issue 4 note: the path through the mode jumps depends on round-off. A
+  // one-ulp change of the friction penalty sent this run down a path where a jump crushed
+  // the bearing mortar through (assumed G_f = 0.1 N/mm), with an energy misfit of 1.7e-2
+  // against 6e-4 here.)
   EXPECT_FALSE(run.result.indicators.global_buckling);
   EXPECT_FALSE(run.result.indicators.casing_failure);
 

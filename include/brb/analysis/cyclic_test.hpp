@@ -3,6 +3,7 @@
 // with the hysteresis, per-cycle metrics and the solver's account of what it did.
 #pragma once
 
+#include "brb/analysis/brace_indicators.hpp"
 #include "brb/analysis/static_analysis.hpp"
 #include "brb/model/brace_model.hpp"
 
@@ -27,29 +28,6 @@ struct CycleMetrics {
   double energy = 0.0;          ///< N mm, loop area (integral of F d delta over the cycle)
   double max_tension = 0.0;     ///< N
   double max_compression = 0.0; ///< N (negative)
-};
-
-/// What the brace did, beyond its force (issue "BRB element" outputs), over the whole test.
-/// Flags follow stated rules (constants in cyclic_test.cpp):
-///  - core fracture: some core fiber's damage reached 0.9;
-///  - casing failure: the mortar under some station crushed through (bearing damage >= 0.9);
-///  - global buckling: the casing (or, without casing, the core) deflected laterally by more
-///    than L_y / 250.
-struct BraceIndicators {
-  double max_steel_damage = 0.0;  ///< largest damage of a core fiber
-  double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
-  double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
-  double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
-  /// Largest number of half-waves of the yielding core's lateral displacement (relative to
-  /// the casing when there is one) while in compression: sign changes along the core + 1,
-  /// over values above 10 % of the largest, in the direction where the core moved most.
-  int max_buckling_half_waves = 0;
-  /// Sum over the steps of |d(delta) - dF / K0| / dy, K0 = Py / dy: the cumulative inelastic
-  /// deformation in multiples of the yield deformation (AISC 341 K3 uses it).
-  double cumulative_inelastic_deformation = 0.0;
-  bool core_fracture = false;
-  bool casing_failure = false;
-  bool global_buckling = false;
 };
 
 struct CyclicTestResult {

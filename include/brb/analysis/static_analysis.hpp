@@ -1,5 +1,7 @@
 // StaticAnalysis: path-following static solution of a Model under displacement control of
-// one DOF (the cyclic test of a brace) or load control (a reference load times a factor).
+// one DOF (the cyclic test of a brace), load control (a reference load times a factor), or
+// prescribed motion of a set of nodes (all six DOF each, a parameter 0..1 moving them from
+// their committed to a target configuration: the nested solve of a condensed BRBElement).
 //
 // Algorithm per step: tangent predictor, Newton-Raphson with a backtracking line search on
 // the residual; on failure the step is retried in halves down to a floor (1 / 2^max_halvings
@@ -22,6 +24,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,11 @@ struct NewtonSettings {
   /// Converged when |residual|_inf <= tolerance * (largest element force component +
   /// largest external load + 1 N).
   double relative_force_tolerance = 1e-9;
+  /// Relative precision assumed for node positions (of the model's size): the stiffest
+  /// element turns it into the residual's round-off floor, 1e-14 x size x largest diagonal
+  /// stiffness, below which no tolerance is asked. Lower it only to compare solutions more
+  /// closely than that (e.g. a condensed against an expanded model).
+  double position_round_off = 1e-14;
   bool line_search = true;
   int max_halvings = 12;         ///< substep floor: step / 2^max_halvings
   int fallback_iterations = 500; ///< pseudo-time steps allowed per limit point
@@ -88,6 +96,18 @@ struct EnergyBalance {
   double relative_error() const;
 };
 
+/// The committed path of an analysis: what a caller that rolls the analysis back (a
+/// condensed macro element between global commits) must keep besides its elements' states.
+struct AnalysisPathState {
+  std::vector<element::NodeConfiguration> nodes;
+  Eigen::VectorXd internal_force;
+  double control_value = 0.0;
+  double control_force = 0.0;
+  bool stable = true;
+  EnergyBalance energy;
+  double energy_error_sum = 0.0; ///< signed sum of the steps' energy misfits
+};
+
 class StaticAnalysis {
 public:
   explicit StaticAnalysis(model::Model& model, NewtonSettings settings = {});
@@ -96,6 +116,24 @@ public:
   void use_displacement_control(int node, model::Dof dof);
   /// Control by a load factor times a reference load (N or N mm per DOF).
   void use_load_control(const Eigen::VectorXd& reference_load);
+  /// Control by the motion of `nodes` (all six DOF of each become prescribed). The control
+  /// parameter runs from 0 to 1 between their committed configuration and the target of
+  /// set_motion_target(): translations linearly, rotations along the rotation vector of
+  /// the relative rotation, R(s) = exp(s theta) R_0 with theta = log(R_target R_0^T).
+  void use_prescribed_motion(std::vector<int> nodes);
+  /// Targets of the prescribed nodes (in the order given to use_prescribed_motion), from
+  /// their committed configuration; the control restarts at 0 (step_to(1.0) gets there).
+  void set_motion_target(std::span<const element::NodeConfiguration> targets);
+  /// Under prescribed motion, the tangent of the last converged state statically condensed
+  /// to the prescribed DOF (6 per node, in their order): K_pp - K_pf K_ff^-1 K_fp, with
+  /// respect to translations and spins. Valid right after a converged step_to().
+  Eigen::MatrixXd condensed_tangent();
+
+  /// The committed path (node configurations, forces, control, energies) and its restoration;
+  /// the elements' states are the caller's (Model::copy_element_states_from).
+  AnalysisPathState path_state() const;
+  void restore_path_state(const AnalysisPathState& state);
+
   /// A dead load applied in every state (e.g. gravity), in addition to the control.
   void set_constant_load(const Eigen::VectorXd& load);
 
@@ -138,6 +176,8 @@ private:
   };
 
   void number_equations();
+  /// Displacement control or prescribed motion (the control moves DOF, not a load).
+  bool kinematic_control() const { return displacement_control_ || !motion_nodes_.empty(); }
   /// Assembles internal forces (all DOF) and the free-free tangent at the trial state.
   bool assemble(bool with_tangent, std::string& failure);
   Eigen::VectorXd free_residual(double control) const;
@@ -180,7 +220,18 @@ private:
   double model_extent_ = 1.0; // largest coordinate magnitude (mm), for the round-off floor
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> tangent_; // free x free
-  Eigen::VectorXd control_column_;      // d F_free / d control DOF
+  Eigen::VectorXd control_column_;      // d F_free / d control
+  // d (prescribed DOF) / d control, all DOF (zero but at the controlled ones)
+  Eigen::VectorXd control_rate_;
+  // prescribed motion: nodes, their configuration at control 0, targets, rotation vectors
+  std::vector<int> motion_nodes_;
+  std::vector<element::NodeConfiguration> motion_start_;
+  std::vector<element::NodeConfiguration> motion_target_;
+  std::vector<element::Vector3> motion_rotation_;
+  std::vector<int> prescribed_index_;             // global DOF -> prescribed DOF index or -1
+  Eigen::MatrixXd tangent_free_prescribed_;       // K_fp
+  Eigen::MatrixXd tangent_prescribed_free_;       // K_pf
+  Eigen::MatrixXd tangent_prescribed_prescribed_; // K_pp
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
   bool pattern_analysed_ = false;
 

@@ -52,6 +52,7 @@ public:
                 Eigen::MatrixXd& tangent, std::string& failure) override;
   void commit() override { committed_ = trial_; }
   void revert_to_committed() override { trial_ = committed_; }
+  void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   ElementEnergy energy() const override;
 
   /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N).

@@ -243,6 +243,7 @@ public:
 
   void commit() override { local_.commit(); }
   void revert_to_committed() override { local_.revert_to_committed(); }
+  void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   ElementEnergy energy() const override { return local_.energy(); }
 
   const CorotationalFrame& frame() const { return frame_; }

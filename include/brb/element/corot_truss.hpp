@@ -52,6 +52,7 @@ public:
 
   void commit() override { committed_ = trial_; }
   void revert_to_committed() override { trial_ = committed_; }
+  void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
 
   ElementEnergy energy() const override {
     const double volume = area_ * initial_length_;

@@ -47,6 +47,17 @@ public:
 
   /// Energies of the last evaluated state.
   virtual ElementEnergy energy() const = 0;
+
+  /// Takes over the whole state (committed and trial) of `other`, an element of the same
+  /// type built from the same data (a twin). A macro element that solves an internal model
+  /// keeps a twin of it as its committed state (BRBElement), because the substeps of its
+  /// internal solver commit the internal elements. Throws std::bad_cast for another type.
+  virtual void copy_state_from(const Element& other) = 0;
 };
+
+/// copy_state_from for elements whose state is their value: a plain copy.
+template <class Derived> void copy_element_value(Derived& target, const Element& source) {
+  target = dynamic_cast<const Derived&>(source);
+}
 
 } // namespace brb::element

@@ -1,5 +1,8 @@
-// ZeroLengthSpring: linear springs between two nodes, one per global DOF (DESIGN.md section
-// 4: the stopper that ties a BRB casing to its core at mid-length, axially and in twist).
+// ZeroLengthSpring: linear springs between two nodes, one per DOF of a fixed set of axes
+// (global by default; a brace's axis and section axes for its stopper, DESIGN.md section 4:
+// the stopper that ties a BRB casing to its core at mid-length, axially and in twist).
+// With axes Q (columns), the stiffness matrices are Q diag(k) Q^T (symmetric), which the
+// formulas below take as they are.
 //
 // Translations: f = K_u (u_j - u_i), u the nodal displacement from the reference positions.
 // Rotations: the relative rotation vector theta = log(R_j R_i^T) in global axes, with the
@@ -16,21 +19,24 @@
 
 namespace brb::element {
 
-/// Stiffness per global DOF: ux, uy, uz (N/mm), rx, ry, rz (N mm/rad).
+/// Stiffness per DOF of the spring's axes: ux, uy, uz (N/mm), rx, ry, rz (N mm/rad).
 using SpringStiffness = std::array<double, 6>;
 
 class ZeroLengthSpring final : public Element {
 public:
   /// nodes {i, j}; the reference positions fix the unstretched state (they need not
-  /// coincide). Throws ParameterError ("stiffness") for a negative or non-finite value.
+  /// coincide). `axes`: columns are the directions of the springs' x, y, z (orthonormal).
+  /// Throws ParameterError ("stiffness", "axes") for a negative or non-finite value or axes
+  /// that are not orthonormal.
   ZeroLengthSpring(std::array<int, 2> nodes, const Vector3& position_i, const Vector3& position_j,
-                   const SpringStiffness& stiffness);
+                   const SpringStiffness& stiffness, const Matrix3& axes = Matrix3::Identity());
 
   std::span<const int> nodes() const override { return nodes_; }
   bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
                 Eigen::MatrixXd& tangent, std::string& failure) override;
   void commit() override {}
   void revert_to_committed() override {}
+  void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   ElementEnergy energy() const override { return {stored_energy_, 0.0}; }
 
   /// Force on node j (N; reaction of the translational springs) of the last evaluation.
@@ -40,9 +46,9 @@ public:
 
 private:
   std::array<int, 2> nodes_;
-  Vector3 reference_offset_; ///< X_j - X_i
-  Vector3 translational_stiffness_;
-  Vector3 rotational_stiffness_;
+  Vector3 reference_offset_;        ///< X_j - X_i
+  Matrix3 translational_stiffness_; ///< Q diag(k_u) Q^T (global)
+  Matrix3 rotational_stiffness_;    ///< Q diag(k_r) Q^T (global)
   Vector3 spring_force_ = Vector3::Zero();
   Vector3 spring_moment_ = Vector3::Zero();
   double stored_energy_ = 0.0;

@@ -101,6 +101,18 @@ struct CasingSpec {
 /// Extent of a core section along section y and z (its bounding box, mm).
 std::pair<double, double> core_extent(const SectionSpec& core);
 
+/// How a brace enters a model (DESIGN.md section 4, BRB element): `full` is the fiber core
+/// with its casing, `truss` a co-rotational truss with the core's uniaxial steel law in
+/// series with the elastic end zones (element::BraceTruss). A full brace is `condensed`
+/// (its internal model solved inside the element, analysis::BRBElement) or `expanded` (its
+/// internal nodes and elements join the model, add_brace_to_model).
+enum class Fidelity { full, truss };
+enum class ElementMode { condensed, expanded };
+struct ElementSpec {
+  Fidelity fidelity = Fidelity::full;
+  ElementMode mode = ElementMode::condensed;
+};
+
 struct BraceSpec {
   std::string name;
   SectionSpec core_section;
@@ -114,6 +126,7 @@ struct BraceSpec {
   EndCondition ends = EndCondition::pinned;
   ImperfectionSpec imperfection;
   std::optional<CasingSpec> casing; ///< nullopt: bare core
+  ElementSpec element;              ///< fidelity and mode in frames (brace file: "element")
 
   /// Length between the outer nodes (work points), mm.
   double total_length() const;

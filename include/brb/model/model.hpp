@@ -46,6 +46,10 @@ public:
 
   std::span<const std::unique_ptr<element::Element>> elements() const { return elements_; }
 
+  /// Takes over the state of every element of `other`, a twin model built from the same data
+  /// (same elements in the same order; see Element::copy_state_from).
+  void copy_element_states_from(const Model& other);
+
 private:
   void check_element_nodes(const element::Element& element) const;
 

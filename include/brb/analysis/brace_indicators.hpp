@@ -1,0 +1,71 @@
+// What a brace did beyond its force (issue "BRB element" outputs), followed over its
+// converged states. One tracker serves the cyclic test (`brb cyclic`, the brace as the whole
+// model) and the condensed BRBElement (the brace solved inside an element).
+#pragma once
+
+#include "brb/model/brace_model.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace brb::analysis {
+
+/// Flags follow stated rules (constants in brace_indicators.cpp):
+///  - core fracture: some core fiber's damage reached 0.9;
+///  - casing failure: the mortar under some station crushed through (bearing damage >= 0.9);
+///  - global buckling: the casing (or, without casing, the core) deflected laterally by more
+///    than L_y / 250.
+struct BraceIndicators {
+  double max_steel_damage = 0.0;  ///< largest damage of a core fiber
+  double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
+  double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
+  double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
+  /// Largest number of half-waves of the yielding core's lateral displacement (relative to
+  /// the casing when there is one) while in compression: sign changes along the core + 1,
+  /// over values above 10 % of the largest, in the direction where the core moved most.
+  int max_buckling_half_waves = 0;
+  /// Sum over the steps of |d(delta) - dF / K0| / dy, K0 = Py / dy: the cumulative inelastic
+  /// deformation in multiples of the yield deformation (AISC 341 K3 uses it).
+  double cumulative_inelastic_deformation = 0.0;
+  bool core_fracture = false;
+  bool casing_failure = false;
+  bool global_buckling = false;
+};
+
+/// Updates BraceIndicators with each converged state of a brace. Lateral motions are
+/// measured in the brace's section axes (BraceHandles::axes).
+class BraceIndicatorTracker {
+public:
+  /// Current position of a node of the brace's model (global, mm).
+  using Positions = std::function<const element::Vector3&(int node)>;
+
+  /// `brace` and `model`: the brace's handles and the model that holds them (its initial
+  /// node coordinates are the reference); both must outlive the tracker's observe() calls.
+  BraceIndicatorTracker(const model::BraceHandles& brace, const model::Model& model);
+
+  /// Observes a converged state: node positions, the brace's deformation (mm) and axial
+  /// force (N, tension positive).
+  void observe(const Positions& position, double deformation, double force);
+
+  const BraceIndicators& indicators() const { return indicators_; }
+
+  /// Follows the same brace in a twin model (same nodes and elements) from now on.
+  void rebind(const model::BraceHandles& brace, const model::Model& model) {
+    brace_ = &brace;
+    model_ = &model;
+  }
+
+  /// Largest lateral motion of a node of the brace (core and casing) in the state `position`.
+  double max_lateral_displacement(const Positions& position) const;
+
+private:
+  const model::BraceHandles* brace_;
+  const model::Model* model_;
+  std::vector<element::Vector3> initial_positions_; ///< of brace_->nodes
+  double yielding_length_ = 0.0;
+  double previous_deformation_ = 0.0;
+  double previous_force_ = 0.0;
+  BraceIndicators indicators_;
+};
+
+} // namespace brb::analysis

@@ -1,0 +1,134 @@
+#include "brb/analysis/brace_indicators.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brb::analysis {
+namespace {
+
+constexpr double kFractureDamage = 0.9;      // a core fiber this damaged has fractured
+constexpr double kCrushedDamage = 0.9;       // a bearing face this damaged has crushed through
+constexpr double kGlobalBucklingRatio = 250; // lateral deflection beyond L_y / 250
+
+} // namespace
+
+BraceIndicatorTracker::BraceIndicatorTracker(const model::BraceHandles& brace,
+                                             const model::Model& model)
+    : brace_(&brace), model_(&model) {
+  for (const int node : brace.nodes)
+    initial_positions_.push_back(model.coordinates(node));
+  for (std::size_t e = 0; e < brace.beams.size(); ++e) {
+    if (brace.in_yielding_zone[e])
+      yielding_length_ += brace.beams[e]->local_beam().length();
+  }
+  if (brace.truss)
+    yielding_length_ = brace.truss->parameters().yielding_length;
+}
+
+double BraceIndicatorTracker::max_lateral_displacement(const Positions& position) const {
+  double largest = 0.0;
+  for (std::size_t n = 0; n < brace_->nodes.size(); ++n) {
+    const element::Vector3 motion = position(brace_->nodes[n]) - initial_positions_[n];
+    largest = std::max(
+        largest, std::hypot(motion.dot(brace_->axes.col(1)), motion.dot(brace_->axes.col(2))));
+  }
+  return largest;
+}
+
+void BraceIndicatorTracker::observe(const Positions& position, double deformation, double force) {
+  const model::BraceHandles& brace = *brace_;
+  BraceIndicators& indicators = indicators_;
+  for (const auto* beam : brace.beams) {
+    for (const auto& section : beam->local_beam().sections()) {
+      indicators.max_steel_damage = std::max(indicators.max_steel_damage, section.max_damage());
+    }
+  }
+  if (brace.truss)
+    indicators.max_steel_damage = std::max(indicators.max_steel_damage, brace.truss->damage());
+  // lateral motion: components along the section axes y and z
+  const auto lateral_of = [&](int node, const element::Vector3& initial) {
+    const element::Vector3 motion = position(node) - initial;
+    return Eigen::Vector2d(motion.dot(brace.axes.col(1)), motion.dot(brace.axes.col(2)));
+  };
+  for (std::size_t n = 0; n < brace.nodes.size(); ++n) {
+    indicators.max_core_lateral_displacement =
+        std::max(indicators.max_core_lateral_displacement,
+                 lateral_of(brace.nodes[n], initial_positions_[n]).norm());
+  }
+  // Lateral displacement of the yielding core's stations, relative to the casing if any.
+  std::vector<Eigen::Vector2d> relative;
+  double casing_lateral = 0.0;
+  if (brace.casing) {
+    const auto& casing = *brace.casing;
+    for (const auto* contact : casing.contacts) {
+      indicators.max_mortar_damage =
+          std::max(indicators.max_mortar_damage, contact->max_mortar_damage());
+    }
+    for (const auto* beam : casing.beams) {
+      for (const auto& section : beam->local_beam().sections()) {
+        indicators.max_mortar_damage = std::max(indicators.max_mortar_damage, section.max_damage());
+      }
+    }
+    for (std::size_t s = 0; s < casing.nodes.size(); ++s) {
+      const int casing_node = casing.nodes[s];
+      const Eigen::Vector2d casing_motion =
+          lateral_of(casing_node, model_->coordinates(casing_node));
+      casing_lateral = std::max(casing_lateral, casing_motion.norm());
+      const int core_node = casing.core_nodes[s];
+      relative.push_back(lateral_of(core_node, model_->coordinates(core_node)) - casing_motion);
+    }
+    indicators.max_casing_lateral_displacement =
+        std::max(indicators.max_casing_lateral_displacement, casing_lateral);
+    if (indicators.max_mortar_damage >= kCrushedDamage)
+      indicators.casing_failure = true;
+  } else {
+    for (std::size_t e = 0; e < brace.beams.size(); ++e) {
+      if (!brace.in_yielding_zone[e])
+        continue;
+      if (relative.empty())
+        relative.push_back(lateral_of(brace.nodes[e], initial_positions_[e]));
+      relative.push_back(lateral_of(brace.nodes[e + 1], initial_positions_[e + 1]));
+    }
+  }
+  // half-waves in the direction of the largest motion
+  int direction = 0;
+  double largest = 0.0;
+  for (const auto& u : relative) {
+    for (int k = 0; k < 2; ++k) {
+      if (std::abs(u[k]) > largest) {
+        largest = std::abs(u[k]);
+        direction = k;
+      }
+    }
+  }
+  // buckling happens in compression: count the half-waves there only
+  if (force < 0.0 && largest > 1e-3) {
+    int half_waves = 0;
+    double previous_sign = 0.0;
+    for (const auto& u : relative) {
+      if (std::abs(u[direction]) < 0.1 * largest)
+        continue;
+      const double sign = u[direction] > 0.0 ? 1.0 : -1.0;
+      if (sign != previous_sign)
+        ++half_waves;
+      previous_sign = sign;
+    }
+    indicators.max_buckling_half_waves = std::max(indicators.max_buckling_half_waves, half_waves);
+  }
+  if (indicators.max_steel_damage >= kFractureDamage)
+    indicators.core_fracture = true;
+  const double global_lateral =
+      brace.casing ? casing_lateral : indicators.max_core_lateral_displacement;
+  if (yielding_length_ > 0.0 && global_lateral > yielding_length_ / kGlobalBucklingRatio)
+    indicators.global_buckling = true;
+
+  const double elastic_stiffness = brace.yield_force / brace.yield_deformation;
+  indicators.cumulative_inelastic_deformation +=
+      std::abs((deformation - previous_deformation_) -
+               (force - previous_force_) / elastic_stiffness) /
+      brace.yield_deformation;
+  previous_deformation_ = deformation;
+  previous_force_ = force;
+}
+
+} // namespace brb::analysis
