@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <ios>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -39,6 +40,7 @@ constexpr double kDefaultStepsPerYieldDeformation = 10.0;
 
 constexpr const char* kHysteresisFile = "hysteresis.csv";
 constexpr const char* kSummaryFile = "summary.json";
+constexpr const char* kElementHistoryFile = "element_history.csv";
 
 /// The text summary lists at most this many cycles (the first and the last half of them);
 /// summary.json has them all.
@@ -197,7 +199,28 @@ void print_cycle_table(std::ostream& out, const std::vector<analysis::CycleMetri
 struct OutputFiles {
   fs::path hysteresis;
   fs::path summary;
+  std::optional<fs::path> element_history;
 };
+
+/// The element outputs after every step (README, "DIR/element_history.csv").
+io::NumericTable element_history_table(const analysis::CyclicTestResult& result) {
+  io::NumericTable table({"step", "core_strain", "dissipated_energy",
+                          "cumulative_inelastic_deformation", "max_core_lateral_displacement",
+                          "max_casing_lateral_displacement", "max_buckling_half_waves",
+                          "max_steel_damage", "max_mortar_damage", "core_fracture",
+                          "casing_failure", "global_buckling"});
+  for (const analysis::ElementHistoryPoint& point : result.history) {
+    const analysis::BraceIndicators& indicators = point.indicators;
+    table.append_row(std::array{
+        static_cast<double>(point.step), point.core_strain, point.dissipated_energy,
+        indicators.cumulative_inelastic_deformation, indicators.max_core_lateral_displacement,
+        indicators.max_casing_lateral_displacement,
+        static_cast<double>(indicators.max_buckling_half_waves), indicators.max_steel_damage,
+        indicators.max_mortar_damage, indicators.core_fracture ? 1.0 : 0.0,
+        indicators.casing_failure ? 1.0 : 0.0, indicators.global_buckling ? 1.0 : 0.0});
+  }
+  return table;
+}
 
 void print_report(std::ostream& out, const CyclicCommand& command, const std::string& name,
                   const model::BraceModel& brace, const io::LoadingProtocol& protocol,
@@ -237,6 +260,8 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
       << significant(balance.relative_error(), 3) << "\n"
       << "  wrote " << files.hysteresis.string() << "\n"
       << "        " << files.summary.string() << "\n";
+  if (files.element_history)
+    out << "        " << files.element_history->string() << "\n";
 }
 
 } // namespace
@@ -285,12 +310,17 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           "change of stored and dissipated energy| would exceed this fraction of the gross "
           "work; default 0 (off)")
       ->type_name("FRACTION");
+  cyclic->add_flag("--histories", command.histories,
+                   "Also write element_history.csv: core strain, dissipated energy, cumulative "
+                   "inelastic deformation, lateral displacements, half-waves, damage and flags "
+                   "after every step");
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
       "    (mm, N; tension and elongation positive)\n"
       "  summary.json: yield force and deformation, peak forces, energy per cycle, solver\n"
-      "    statistics, energy balance\n"
+      "    statistics, energy balance, element outputs\n"
+      "  element_history.csv (with --histories): the element outputs after every step\n"
       "Units: N, mm, MPa. Exit status: 0 completed, 1 the analysis stopped early (what was\n"
       "computed is written) or the run failed, 2 invalid input or usage (nothing written).");
   return cyclic;
@@ -312,14 +342,20 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
 
   analysis::NewtonSettings settings;
   settings.energy_tolerance = command.energy_tolerance;
-  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
-      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings);
+  const analysis::CyclicTestResult result =
+      analysis::run_cyclic_test(brace, protocol.deformation, protocol.cycle,
+                                protocol.cycle_amplitude, settings, command.histories);
 
   // Written also when the analysis stopped early: what was computed is a result too.
-  const OutputFiles files{command.output_directory / kHysteresisFile,
-                          command.output_directory / kSummaryFile};
+  OutputFiles files{command.output_directory / kHysteresisFile,
+                    command.output_directory / kSummaryFile, std::nullopt};
+  if (command.histories)
+    files.element_history = command.output_directory / kElementHistoryFile;
   fs::create_directory(command.output_directory);
   io::write_file_atomically(files.hysteresis, hysteresis_table(result).text());
+  if (files.element_history) {
+    io::write_file_atomically(*files.element_history, element_history_table(result).text());
+  }
   io::write_file_atomically(files.summary, summary_json(name, brace, result).dump(2) + "\n");
 
   print_report(report, command, name, brace, protocol, result, files);

@@ -18,6 +18,8 @@ struct CyclicCommand {
   /// Energy-error control of the solver (NewtonSettings::energy_tolerance); 0 (default) turns
   /// it off: it costs many substeps on restrained cores (README, "Energy balance").
   double energy_tolerance = 0.0;
+  /// Also write DIR/element_history.csv: the element outputs after every step.
+  bool histories = false;
 };
 
 /// Registers the sub-command and its options (stored into `command` when parsed).

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 namespace brb::analysis {
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
-                                 std::span<const double> cycle_amplitude, NewtonSettings settings) {
+                                 std::span<const double> cycle_amplitude, NewtonSettings settings,
+                                 bool record_history) {
   CyclicTestResult result;
   StaticAnalysis analysis(brace.model, settings);
   analysis.use_displacement_control(brace.end_node, model::ux);
@@ -18,6 +21,29 @@ CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const doubl
   };
 
   result.steps.push_back({0, cycle.empty() ? 0 : cycle[0], 0.0, 0.0, 0.0, 0});
+  // The yielding core's end nodes, for its mean strain (none for the truss fidelity).
+  std::optional<std::pair<int, int>> yielding_ends;
+  for (std::size_t e = 0; e < brace.in_yielding_zone.size(); ++e) {
+    if (!brace.in_yielding_zone[e])
+      continue;
+    if (!yielding_ends)
+      yielding_ends = {brace.nodes[e], brace.nodes[e + 1]};
+    yielding_ends->second = brace.nodes[e + 1];
+  }
+  const auto core_strain = [&]() {
+    if (brace.truss != nullptr)
+      return brace.truss->core_strain();
+    if (!yielding_ends)
+      return 0.0;
+    const double initial = (brace.model.coordinates(yielding_ends->second) -
+                            brace.model.coordinates(yielding_ends->first))
+                               .norm();
+    const double current =
+        (position(yielding_ends->second) - position(yielding_ends->first)).norm();
+    return (current - initial) / initial;
+  };
+  if (record_history)
+    result.history.push_back({0, 0.0, 0.0, tracker.indicators()});
   CycleMetrics current;
   for (std::size_t k = 1; k < deformation.size(); ++k) {
     const StepReport report = analysis.step_to(deformation[k]);
@@ -36,6 +62,12 @@ CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const doubl
                     report.substeps};
     const CyclicStep& previous = result.steps.back();
     tracker.observe(position, step.deformation, step.force);
+    if (record_history) {
+      const EnergyBalance& energy = analysis.energy();
+      result.history.push_back({step.step, core_strain(),
+                                energy.dissipated + energy.released_in_jumps,
+                                tracker.indicators()});
+    }
     const double work =
         0.5 * (step.force + previous.force) * (step.deformation - previous.deformation);
     result.energy_total += work;

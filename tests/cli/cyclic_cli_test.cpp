@@ -333,6 +333,49 @@ TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
   }
 }
 
+TEST(CyclicCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace(/*straight=*/true).dump(2));
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump(2));
+  const auto output = scratch.path() / "results";
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output, "--histories"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  const std::vector<std::string> lines = lines_of(read_file(output / "element_history.csv"));
+  ASSERT_EQ(lines.size(), rows.size() + 1);
+  EXPECT_EQ(lines.front(),
+            "step,core_strain,dissipated_energy,cumulative_inelastic_deformation,"
+            "max_core_lateral_displacement,max_casing_lateral_displacement,"
+            "max_buckling_half_waves,max_steel_damage,max_mortar_damage,core_fracture,"
+            "casing_failure,global_buckling");
+  const json summary = json::parse(read_file(output / "summary.json"));
+  std::vector<double> previous(12, 0.0);
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const std::vector<double> values = numbers_of(lines[k]);
+    ASSERT_EQ(values.size(), 12u) << lines[k];
+    EXPECT_EQ(values[0], rows[k - 1].step);
+    // Reference (theory): the straight core without end zones is the whole brace, so its
+    // mean strain is the deformation over its length.
+    EXPECT_NEAR(values[1], rows[k - 1].deformation / kCoreLength, 1e-9);
+    // dissipation and the running maxima never decrease
+    for (const std::size_t column : {2u, 3u, 4u, 6u, 7u}) {
+      EXPECT_GE(values[column], previous[column] - 1e-9 * std::abs(previous[column]))
+          << "column " << column << ", row " << k;
+    }
+    previous = values;
+  }
+  // The last row holds what summary.json reports for the whole test.
+  const json& element = summary.at("element");
+  EXPECT_NEAR(previous[3], element.at("cumulative_inelastic_deformation").get<double>(), 1e-9);
+  EXPECT_NEAR(previous[4], element.at("max_core_lateral_displacement").get<double>(), 1e-9);
+  EXPECT_NEAR(previous[2],
+              summary.at("energy_balance").at("dissipated").get<double>() +
+                  summary.at("energy_balance").at("released_in_jumps").get<double>(),
+              1e-9 * previous[2]);
+  EXPECT_GT(previous[2], 0.0);
+  EXPECT_NE(run.out.find("element_history.csv"), std::string::npos) << run.out;
+}
+
 TEST(CyclicCli, TrussFidelityFollowsTheClosedFormBarLaw) {
   // "element": {"fidelity": "truss"}: one co-rotational truss with the uniaxial steel law
   // over the yielding length (no end zones here), so the force is the closed-form bar law

@@ -22,6 +22,17 @@ struct CyclicStep {
   int substeps = 1;                      ///< substeps the step needed
 };
 
+/// The element outputs after a step (issue 4 "histories when asked"): the running maxima and
+/// flags of BraceIndicators up to that step, with the step's own core strain and energy.
+struct ElementHistoryPoint {
+  int step = 0;
+  /// Mean axial strain of the yielding core: change of the chord between its end nodes over
+  /// its length (the truss fidelity: its core strain).
+  double core_strain = 0.0;
+  double dissipated_energy = 0.0; ///< N mm, by all the brace's elements, with jumps
+  BraceIndicators indicators;     ///< up to and including this step
+};
+
 struct CycleMetrics {
   int index = 0;                ///< 1-based
   double amplitude = 0.0;       ///< mm (from the protocol)
@@ -46,6 +57,7 @@ struct CyclicTestResult {
   int energy_cuts = 0;             ///< substeps cut by the energy-error control
   int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
   BraceIndicators indicators;
+  std::vector<ElementHistoryPoint> history; ///< one per step, when asked for
 };
 
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
@@ -55,6 +67,6 @@ struct CyclicTestResult {
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,
-                                 NewtonSettings settings = {});
+                                 NewtonSettings settings = {}, bool record_history = false);
 
 } // namespace brb::analysis
