@@ -1,5 +1,7 @@
 #include "brb/element/brace_truss.hpp"
 
+#include "brb/element/corot_truss.hpp"
+
 #include "brb/material/parameter_error.hpp"
 
 #include <cmath>
@@ -80,17 +82,7 @@ bool BraceTruss::evaluate(std::span<const NodeConfiguration> configuration, Eige
   // dN/dDelta = A E_t d eps/dDelta = A E_t / g'
   const double axial_stiffness = area * response.tangent / slope;
 
-  const Matrix3 along = direction * direction.transpose();
-  const Matrix3 block =
-      axial_stiffness * along + axial_force_ / length * (Matrix3::Identity() - along);
-  force = Eigen::VectorXd::Zero(12);
-  tangent = Eigen::MatrixXd::Zero(12, 12);
-  force.segment<3>(0) = -axial_force_ * direction;
-  force.segment<3>(6) = axial_force_ * direction;
-  tangent.block<3, 3>(0, 0) = block;
-  tangent.block<3, 3>(6, 6) = block;
-  tangent.block<3, 3>(0, 6) = -block;
-  tangent.block<3, 3>(6, 0) = -block;
+  chord_force_and_tangent(direction, length, axial_force_, axial_stiffness, force, tangent);
   return true;
 }
 

@@ -13,6 +13,25 @@
 
 namespace brb::element {
 
+/// Nodal forces and tangent (12 DOF, rotations carry nothing) of an axial force N along the
+/// current chord (unit `direction`, `length` l) with axial stiffness dN/dl:
+///   f = N (-e, e),  K = (dN/dl) e e^T + (N / l)(I - e e^T)  on (u_i, u_j).
+inline void chord_force_and_tangent(const Vector3& direction, double length, double axial_force,
+                                    double axial_stiffness, Eigen::VectorXd& force,
+                                    Eigen::MatrixXd& tangent) {
+  const Matrix3 along = direction * direction.transpose();
+  const Matrix3 block =
+      axial_stiffness * along + axial_force / length * (Matrix3::Identity() - along);
+  force = Eigen::VectorXd::Zero(12);
+  tangent = Eigen::MatrixXd::Zero(12, 12);
+  force.segment<3>(0) = -axial_force * direction;
+  force.segment<3>(6) = axial_force * direction;
+  tangent.block<3, 3>(0, 0) = block;
+  tangent.block<3, 3>(6, 6) = block;
+  tangent.block<3, 3>(0, 6) = -block;
+  tangent.block<3, 3>(6, 0) = -block;
+}
+
 template <class UniaxialLaw> class CorotTruss final : public Element {
 public:
   /// area A (mm^2); the law's characteristic length should be L0 (one integration point).
@@ -36,17 +55,8 @@ public:
     const auto response = law_.evaluate(committed_, strain_);
     trial_ = response.state;
     axial_force_ = area_ * response.stress;
-    const Matrix3 block =
-        area_ * response.tangent / initial_length_ * direction * direction.transpose() +
-        axial_force_ / length * (Matrix3::Identity() - direction * direction.transpose());
-    force = Eigen::VectorXd::Zero(12);
-    tangent = Eigen::MatrixXd::Zero(12, 12);
-    force.segment<3>(0) = -axial_force_ * direction;
-    force.segment<3>(6) = axial_force_ * direction;
-    tangent.block<3, 3>(0, 0) = block;
-    tangent.block<3, 3>(6, 6) = block;
-    tangent.block<3, 3>(0, 6) = -block;
-    tangent.block<3, 3>(6, 0) = -block;
+    chord_force_and_tangent(direction, length, axial_force_,
+                            area_ * response.tangent / initial_length_, force, tangent);
     return true;
   }
 
