@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 namespace brb::validation {
@@ -266,8 +267,9 @@ std::string report_markdown(const ValidationReport& report) {
           << " |\n";
     }
     out << "\nSources:\n\n";
+    std::set<std::string> listed; // a contrast has one result per refinement: list it once
     for (const ContrastResult& result : report.contrasts) {
-      if (result.refinement.value_or(0) <= 1)
+      if (listed.insert(result.contrast.name).second)
         out << "- " << result.contrast.name << ": " << result.contrast.source << "\n";
     }
   }
