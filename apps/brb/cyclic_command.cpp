@@ -4,6 +4,7 @@
 #include "brb/io/atomic_file.hpp"
 #include "brb/io/brace_input.hpp"
 #include "brb/io/csv.hpp"
+#include "brb/io/cyclic_output.hpp"
 #include "brb/io/input_error.hpp"
 #include "brb/io/json_input.hpp"
 #include "brb/io/material_input.hpp"
@@ -12,9 +13,6 @@
 #include "brb/model/brace_model.hpp"
 #include "brb/model/brace_spec.hpp"
 
-#include <nlohmann/json.hpp>
-
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -30,7 +28,6 @@ namespace brb::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 constexpr int kCompleted = 0;
 constexpr int kStoppedEarly = 1;
@@ -87,68 +84,7 @@ void check_output_directory(const fs::path& directory) {
   }
 }
 
-/// Analysis steps that converged (the initial, unloaded state is not a step).
-int converged_steps(const analysis::CyclicTestResult& result) {
-  return result.steps.empty() ? 0 : static_cast<int>(result.steps.size()) - 1;
-}
-
-io::NumericTable hysteresis_table(const analysis::CyclicTestResult& result) {
-  io::NumericTable table(
-      {"step", "cycle", "deformation", "force", "max_lateral_displacement", "substeps"});
-  for (const analysis::CyclicStep& step : result.steps) {
-    table.append_row(std::array{static_cast<double>(step.step), static_cast<double>(step.cycle),
-                                step.deformation, step.force, step.max_lateral_displacement,
-                                static_cast<double>(step.substeps)});
-  }
-  return table;
-}
-
-Json summary_json(const std::string& name, const model::BraceModel& brace,
-                  const analysis::CyclicTestResult& result) {
-  Json cycles = Json::array();
-  for (const analysis::CycleMetrics& cycle : result.cycles) {
-    cycles.push_back(Json{{"index", cycle.index},
-                          {"amplitude", cycle.amplitude},
-                          {"energy", cycle.energy},
-                          {"max_tension", cycle.max_tension},
-                          {"max_compression", cycle.max_compression}});
-  }
-  const analysis::EnergyBalance& balance = result.energy_balance;
-  Json summary = Json::object();
-  summary["brace"] = name;
-  summary["yield_deformation"] = brace.yield_deformation;
-  summary["yield_force"] = brace.yield_force;
-  summary["max_tension"] = result.max_tension;
-  summary["max_compression"] = result.max_compression;
-  summary["energy_total"] = result.energy_total;
-  summary["cycles"] = std::move(cycles);
-  summary["completed"] = result.completed;
-  summary["stop_reason"] = result.completed ? Json(nullptr) : Json(result.stop_reason);
-  summary["solver"] = Json{{"steps", converged_steps(result)},
-                           {"iterations", result.iterations},
-                           {"substeps", result.substeps},
-                           {"regularised_steps", result.regularised_steps},
-                           {"unstable_accepted", result.unstable_accepted},
-                           {"energy_cuts", result.energy_cuts},
-                           {"energy_tolerance_missed", result.energy_tolerance_missed}};
-  summary["energy_balance"] = Json{
-      {"external_work", balance.external_work}, {"stored", balance.stored},
-      {"dissipated", balance.dissipated},       {"released_in_jumps", balance.released_in_jumps},
-      {"gross_work", balance.gross_work},       {"relative_error", balance.relative_error()}};
-  const analysis::BraceIndicators& indicators = result.indicators;
-  summary["element"] =
-      Json{{"max_steel_damage", indicators.max_steel_damage},
-           {"max_mortar_damage", indicators.max_mortar_damage},
-           {"max_core_lateral_displacement", indicators.max_core_lateral_displacement},
-           {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
-           {"max_buckling_half_waves", indicators.max_buckling_half_waves},
-           {"cumulative_inelastic_deformation", indicators.cumulative_inelastic_deformation},
-           {"core_fracture", indicators.core_fracture},
-           {"casing_failure", indicators.casing_failure},
-           {"global_buckling", indicators.global_buckling}};
-  summary["units"] = Json{{"force", "N"}, {"length", "mm"}};
-  return summary;
-}
+using io::converged_steps;
 
 /// "1 cycle", "3 cycles".
 std::string count_of(std::size_t count, const std::string& noun) {
@@ -352,11 +288,14 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   if (command.histories)
     files.element_history = command.output_directory / kElementHistoryFile;
   fs::create_directory(command.output_directory);
-  io::write_file_atomically(files.hysteresis, hysteresis_table(result).text());
+  io::write_file_atomically(files.hysteresis, io::hysteresis_table(result).text());
   if (files.element_history) {
     io::write_file_atomically(*files.element_history, element_history_table(result).text());
   }
-  io::write_file_atomically(files.summary, summary_json(name, brace, result).dump(2) + "\n");
+  io::write_file_atomically(
+      files.summary,
+      io::cyclic_summary_json(name, brace.yield_deformation, brace.yield_force, result).dump(2) +
+          "\n");
 
   print_report(report, command, name, brace, protocol, result, files);
   if (!result.completed) {

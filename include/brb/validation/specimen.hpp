@@ -1,0 +1,91 @@
+// A validation specimen (DESIGN.md section 9): one folder `validation/<id>/` with the brace
+// file, the loading protocol and `metrics.json`, which names the specimen's source, the mesh
+// refinements to run, an optional measured record, the assumptions and the metrics to check
+// (schema: validation/README.md). Every problem is an io::InputError naming the file, the
+// JSON path and what was expected.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace brb::validation {
+
+/// How a computed value is compared with its reference: |result - reference| <= value
+/// (absolute, in the metric's unit) or <= value |reference| (relative).
+struct Tolerance {
+  enum class Kind { relative, absolute };
+  Kind kind = Kind::relative;
+  double value = 0.0;
+};
+
+/// One metric of metrics.json. The kind (metric_kinds.hpp) turns a run into a value; the
+/// check is one of: a reference with a tolerance, bounds (at_least / at_most), an expected
+/// flag (kind "flag"), or none (the value is reported, not judged).
+struct MetricSpec {
+  std::string name;
+  std::string kind;
+  /// The whole metric object, from which the kind reads its own parameters (already checked
+  /// by the kind when the file was read).
+  nlohmann::json parameters;
+  std::optional<double> reference;
+  std::optional<Tolerance> tolerance; ///< present exactly when reference is
+  std::optional<double> at_least;
+  std::optional<double> at_most;
+  std::optional<bool> expected; ///< kind "flag" only, and required there
+  std::string unit;             ///< of the value and reference ("N", "N mm", "-")
+  std::string source;           ///< where the reference or bound comes from
+};
+
+/// A measured force-deformation record (a lab test) for record-based metrics: the CSV file,
+/// its two columns and their units, converted to N and mm at the edge.
+struct RecordReference {
+  std::filesystem::path file; ///< resolved path (`shared:` prefix resolved)
+  std::string written;        ///< the path as written in metrics.json
+  std::string force_column;
+  std::string deformation_column;
+  std::string force_unit;       ///< "N", "kN" or "kip"
+  std::string length_unit;      ///< "mm" or "in"
+  double force_to_newton = 1.0; ///< multiply a value of the record's force column by this
+  double length_to_millimetre = 1.0;
+};
+
+struct Specimen {
+  std::string id; ///< the folder's name; metrics.json's "id" must equal it
+  std::string title;
+  std::string source;
+  std::filesystem::path directory;
+  std::filesystem::path metrics_file;
+  std::filesystem::path brace_file;    ///< resolved against the folder
+  std::filesystem::path protocol_file; ///< resolved against the folder
+  std::vector<int> refinements;        ///< multipliers of every zone's element count
+  std::optional<RecordReference> record;
+  std::vector<std::string> notes;
+  std::vector<MetricSpec> metrics;
+};
+
+/// The name of the metrics file of a specimen folder.
+inline constexpr const char* metrics_file_name = "metrics.json";
+/// The prefix of a path that resolves against the shared directory (--shared).
+inline constexpr const char* shared_prefix = "shared:";
+
+/// Reads `directory/metrics.json`; `shared_directory` resolves "shared:" paths of the
+/// reference record, whose file must exist. Checks that the brace and protocol files exist
+/// (their content is read by the run). Throws io::InputError.
+Specimen read_specimen(const std::filesystem::path& directory,
+                       const std::filesystem::path& shared_directory);
+
+/// The specimen folders under `validation_directory`: its sub-directories that hold a
+/// metrics.json, sorted by name. Throws io::InputError when `validation_directory` is not a
+/// directory.
+std::vector<std::filesystem::path>
+find_specimen_directories(const std::filesystem::path& validation_directory);
+
+/// A list of positive whole numbers "1,2,4" (the --refinements option); `what` names the
+/// option in the error (std::invalid_argument).
+std::vector<int> parse_refinement_list(const std::string& text);
+
+} // namespace brb::validation

@@ -1,0 +1,72 @@
+#include "brb/io/cyclic_output.hpp"
+
+#include <array>
+#include <utility>
+
+namespace brb::io {
+
+using Json = nlohmann::ordered_json;
+
+int converged_steps(const analysis::CyclicTestResult& result) {
+  return result.steps.empty() ? 0 : static_cast<int>(result.steps.size()) - 1;
+}
+
+NumericTable hysteresis_table(const analysis::CyclicTestResult& result) {
+  NumericTable table(
+      {"step", "cycle", "deformation", "force", "max_lateral_displacement", "substeps"});
+  for (const analysis::CyclicStep& step : result.steps) {
+    table.append_row(std::array{static_cast<double>(step.step), static_cast<double>(step.cycle),
+                                step.deformation, step.force, step.max_lateral_displacement,
+                                static_cast<double>(step.substeps)});
+  }
+  return table;
+}
+
+Json cyclic_summary_json(const std::string& brace_name, double yield_deformation,
+                         double yield_force, const analysis::CyclicTestResult& result) {
+  Json cycles = Json::array();
+  for (const analysis::CycleMetrics& cycle : result.cycles) {
+    cycles.push_back(Json{{"index", cycle.index},
+                          {"amplitude", cycle.amplitude},
+                          {"energy", cycle.energy},
+                          {"max_tension", cycle.max_tension},
+                          {"max_compression", cycle.max_compression}});
+  }
+  const analysis::EnergyBalance& balance = result.energy_balance;
+  Json summary = Json::object();
+  summary["brace"] = brace_name;
+  summary["yield_deformation"] = yield_deformation;
+  summary["yield_force"] = yield_force;
+  summary["max_tension"] = result.max_tension;
+  summary["max_compression"] = result.max_compression;
+  summary["energy_total"] = result.energy_total;
+  summary["cycles"] = std::move(cycles);
+  summary["completed"] = result.completed;
+  summary["stop_reason"] = result.completed ? Json(nullptr) : Json(result.stop_reason);
+  summary["solver"] = Json{{"steps", converged_steps(result)},
+                           {"iterations", result.iterations},
+                           {"substeps", result.substeps},
+                           {"regularised_steps", result.regularised_steps},
+                           {"unstable_accepted", result.unstable_accepted},
+                           {"energy_cuts", result.energy_cuts},
+                           {"energy_tolerance_missed", result.energy_tolerance_missed}};
+  summary["energy_balance"] = Json{
+      {"external_work", balance.external_work}, {"stored", balance.stored},
+      {"dissipated", balance.dissipated},       {"released_in_jumps", balance.released_in_jumps},
+      {"gross_work", balance.gross_work},       {"relative_error", balance.relative_error()}};
+  const analysis::BraceIndicators& indicators = result.indicators;
+  summary["element"] =
+      Json{{"max_steel_damage", indicators.max_steel_damage},
+           {"max_mortar_damage", indicators.max_mortar_damage},
+           {"max_core_lateral_displacement", indicators.max_core_lateral_displacement},
+           {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
+           {"max_buckling_half_waves", indicators.max_buckling_half_waves},
+           {"cumulative_inelastic_deformation", indicators.cumulative_inelastic_deformation},
+           {"core_fracture", indicators.core_fracture},
+           {"casing_failure", indicators.casing_failure},
+           {"global_buckling", indicators.global_buckling}};
+  summary["units"] = Json{{"force", "N"}, {"length", "mm"}};
+  return summary;
+}
+
+} // namespace brb::io

@@ -1,0 +1,370 @@
+#include "brb/validation/metric_kinds.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <string>
+
+namespace brb::validation {
+namespace {
+
+using Json = nlohmann::json;
+using analysis::CyclicStep;
+
+// ---------------------------------------------------------------------------------------
+// Parameters shared by several kinds
+
+/// A whole number >= 1 (a cycle index).
+int positive_whole_number(const io::JsonValue& value, std::string_view meaning) {
+  const double number = value.number(meaning);
+  if (!(number >= 1.0 && number == std::floor(number) && number < 1e9)) {
+    throw value.error(std::string(meaning) + " must be a whole number >= 1 (got " +
+                      io::describe_json_value(value.json()) + ")");
+  }
+  return static_cast<int>(number);
+}
+
+/// One of `allowed`, else an error listing them.
+std::string one_of(const io::JsonValue& value, std::string_view meaning,
+                   std::initializer_list<std::string_view> allowed) {
+  const std::string text = value.string(meaning);
+  std::string list;
+  for (const std::string_view option : allowed) {
+    if (text == option)
+      return text;
+    list += (list.empty() ? "\"" : ", \"") + std::string(option) + "\"";
+  }
+  throw value.error(std::string(meaning) + " must be one of " + list + " (got \"" + text + "\")");
+}
+
+/// The cycle selector: "cycle" (k, 1-based) or "amplitude_dy" (the first cycle whose
+/// amplitude is that multiple of dy); at most one, and one when `required`.
+void check_cycle_selector(const io::JsonValue& metric, bool required) {
+  const std::optional<io::JsonValue> cycle = metric.find("cycle");
+  const std::optional<io::JsonValue> amplitude = metric.find("amplitude_dy");
+  if (cycle && amplitude)
+    throw amplitude->error("give either \"cycle\" or \"amplitude_dy\", not both");
+  if (cycle)
+    positive_whole_number(*cycle, "cycle index (1-based)");
+  if (amplitude) {
+    const double value = amplitude->number("cycle amplitude in multiples of dy");
+    if (!(value > 0.0))
+      throw amplitude->error("cycle amplitude in multiples of dy must be > 0");
+  }
+  if (required && !cycle && !amplitude) {
+    throw metric.error("missing the cycle: give \"cycle\" (index, 1-based) or \"amplitude_dy\" "
+                       "(the first cycle at that amplitude, in multiples of dy)");
+  }
+}
+
+void check_direction(const io::JsonValue& metric) {
+  one_of(metric.at("direction", "direction of the force, \"tension\" or \"compression\""),
+         "direction", {"tension", "compression"});
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading a hysteresis
+
+/// Two amplitudes are the same protocol amplitude when within this relative difference (a
+/// protocol in dy converted to mm and back is exact to round-off; 1 % also accepts amplitudes
+/// written in mm with a few digits).
+constexpr double kAmplitudeMatch = 0.01;
+
+/// The points of cycle `index` in result.steps: [first, last], `first` being the point
+/// before the cycle (its start, the previous cycle's end), so that the cycle's increments are
+/// (first, last]; its own points, over which peaks are taken, are [own_first, last].
+struct CycleSpan {
+  std::size_t first = 0;
+  std::size_t own_first = 0;
+  std::size_t last = 0;
+  std::string label; ///< "cycle 8 (5.00 dy)"
+};
+
+std::string format_fixed(double value, int decimals) {
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
+}
+
+/// The span of a completed cycle, or a note on why there is none.
+struct CycleLookup {
+  std::optional<CycleSpan> span;
+  std::string note;
+};
+
+CycleLookup find_cycle(const Json& metric, const RunData& run) {
+  const std::vector<analysis::CycleMetrics>& cycles = run.result.cycles;
+  const analysis::CycleMetrics* chosen = nullptr;
+  if (metric.contains("cycle")) {
+    const int index = metric.at("cycle").get<int>();
+    for (const analysis::CycleMetrics& cycle : cycles) {
+      if (cycle.index == index)
+        chosen = &cycle;
+    }
+    if (chosen == nullptr)
+      return {std::nullopt, "cycle " + std::to_string(index) + " was not completed"};
+  } else {
+    const double amplitude_dy = metric.at("amplitude_dy").get<double>();
+    for (const analysis::CycleMetrics& cycle : cycles) {
+      const double ratio = cycle.amplitude / run.yield_deformation;
+      if (std::abs(ratio - amplitude_dy) <= kAmplitudeMatch * amplitude_dy) {
+        chosen = &cycle;
+        break;
+      }
+    }
+    if (chosen == nullptr) {
+      return {std::nullopt, "no completed cycle at " + format_fixed(amplitude_dy, 2) + " dy"};
+    }
+  }
+  const std::vector<CyclicStep>& steps = run.result.steps;
+  const auto in_cycle = [&](const CyclicStep& step) { return step.cycle == chosen->index; };
+  const auto begin = std::find_if(steps.begin(), steps.end(), in_cycle);
+  if (begin == steps.end() || begin == steps.begin())
+    return {std::nullopt, "cycle " + std::to_string(chosen->index) + " has no points"};
+  const auto end = std::find_if_not(begin, steps.end(), in_cycle);
+  CycleSpan span;
+  span.first = static_cast<std::size_t>(begin - steps.begin()) - 1;
+  span.own_first = span.first + 1;
+  span.last = static_cast<std::size_t>(end - steps.begin()) - 1;
+  span.label = "cycle " + std::to_string(chosen->index) + " (" +
+               format_fixed(chosen->amplitude / run.yield_deformation, 2) + " dy)";
+  return {span, ""};
+}
+
+/// The points a peak is taken over: a cycle's, or every point of the run (no selector).
+CycleLookup points_of(const Json& metric, const RunData& run) {
+  if (metric.contains("cycle") || metric.contains("amplitude_dy"))
+    return find_cycle(metric, run);
+  if (run.result.steps.empty())
+    return {std::nullopt, "the run has no points"};
+  return {CycleSpan{0, 0, run.result.steps.size() - 1, "whole run"}, ""};
+}
+
+struct Peaks {
+  double tension = 0.0;     ///< largest force (N)
+  double compression = 0.0; ///< magnitude of the smallest force (N)
+};
+
+Peaks peaks_over(const std::vector<CyclicStep>& steps, const CycleSpan& span) {
+  Peaks peaks{-HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = span.own_first; i <= span.last; ++i) {
+    peaks.tension = std::max(peaks.tension, steps[i].force);
+    peaks.compression = std::max(peaks.compression, -steps[i].force);
+  }
+  return peaks;
+}
+
+// ---------------------------------------------------------------------------------------
+// The kinds: one check and one evaluation each
+
+void check_cycle_energy(const io::JsonValue& metric) {
+  check_cycle_selector(metric, true);
+}
+
+/// Loop energy: the integral of force d(deformation) over the cycle's increments,
+/// trapezoidal (the same rule as summary.json's cycle energy).
+MetricValue evaluate_cycle_energy(const Json& metric, const RunData& run) {
+  const CycleLookup lookup = find_cycle(metric, run);
+  if (!lookup.span)
+    return {std::nullopt, lookup.note};
+  const std::vector<CyclicStep>& steps = run.result.steps;
+  double energy = 0.0;
+  for (std::size_t i = lookup.span->first + 1; i <= lookup.span->last; ++i) {
+    energy += 0.5 * (steps[i].force + steps[i - 1].force) *
+              (steps[i].deformation - steps[i - 1].deformation);
+  }
+  return {energy, lookup.span->label};
+}
+
+void check_peak_force(const io::JsonValue& metric) {
+  check_direction(metric);
+  check_cycle_selector(metric, false);
+}
+
+/// The largest force magnitude in the direction asked, in a cycle or over the run.
+MetricValue evaluate_peak_force(const Json& metric, const RunData& run) {
+  const CycleLookup lookup = points_of(metric, run);
+  if (!lookup.span)
+    return {std::nullopt, lookup.note};
+  const Peaks peaks = peaks_over(run.result.steps, *lookup.span);
+  const bool tension = metric.at("direction").get<std::string>() == "tension";
+  return {tension ? peaks.tension : peaks.compression, lookup.span->label};
+}
+
+void check_compression_tension_ratio(const io::JsonValue& metric) {
+  check_cycle_selector(metric, false);
+}
+
+/// beta = Pmax / Tmax (AISC 341's compression strength adjustment factor): the largest
+/// compression over the largest tension, in a cycle or over the run.
+MetricValue evaluate_compression_tension_ratio(const Json& metric, const RunData& run) {
+  const CycleLookup lookup = points_of(metric, run);
+  if (!lookup.span)
+    return {std::nullopt, lookup.note};
+  const Peaks peaks = peaks_over(run.result.steps, *lookup.span);
+  if (!(peaks.tension > 0.0))
+    return {std::nullopt, lookup.span->label + ": no tension force"};
+  return {peaks.compression / peaks.tension, lookup.span->label};
+}
+
+void check_yield_force(const io::JsonValue& metric) {
+  check_direction(metric);
+  const io::JsonValue offset =
+      metric.at("offset_core_strain",
+                "offset strain of the core for the offset yield definition, e.g. 0.002");
+  const double value = offset.number("offset strain of the core");
+  if (!(value >= 0.0 && value < 0.1))
+    throw offset.error("offset strain of the core must be >= 0 and < 0.1");
+}
+
+/// Offset yield force: where the force-deformation path first crosses the line through
+/// (+/- offset, 0) with the brace's elastic stiffness K0 = Py / dy, the offset being
+/// offset_core_strain x the yielding length (the 0.2 % offset rule of tensile tests applied to
+/// the core, the only part that yields). In tension: the first point with
+/// F <= K0 (delta - offset); in compression: the first with F >= K0 (delta + offset). The
+/// crossing is interpolated linearly between the two points around it.
+MetricValue evaluate_yield_force(const Json& metric, const RunData& run) {
+  const bool tension = metric.at("direction").get<std::string>() == "tension";
+  const double sign = tension ? 1.0 : -1.0;
+  const double stiffness = run.yield_force / run.yield_deformation;
+  const double offset = metric.at("offset_core_strain").get<double>() * run.yielding_length;
+  // Signed distance above the offset line (in the direction of loading): > 0 before the
+  // crossing, <= 0 at and after it.
+  const auto above = [&](const CyclicStep& step) {
+    return sign * (step.force - stiffness * (step.deformation - sign * offset));
+  };
+  const std::vector<CyclicStep>& steps = run.result.steps;
+  for (std::size_t i = 1; i < steps.size(); ++i) {
+    const double before = above(steps[i - 1]);
+    const double after = above(steps[i]);
+    if (before > 0.0 && after <= 0.0) {
+      const double weight = before / (before - after);
+      const double force = steps[i - 1].force + weight * (steps[i].force - steps[i - 1].force);
+      return {sign * force, "step " + std::to_string(steps[i].step) + " (offset " +
+                                format_fixed(offset, 3) + " mm)"};
+    }
+  }
+  return {std::nullopt, std::string("the path never crossed the ") +
+                            (tension ? "tension" : "compression") + " offset line"};
+}
+
+constexpr std::array<std::string_view, 3> kFlags{"core_fracture", "casing_failure",
+                                                 "global_buckling"};
+
+void check_flag(const io::JsonValue& metric) {
+  one_of(metric.at("flag", "the flag of summary.json's element block"), "flag",
+         {kFlags[0], kFlags[1], kFlags[2]});
+}
+
+/// An element flag of summary.json: 1 when raised, 0 when not.
+MetricValue evaluate_flag(const Json& metric, const RunData& run) {
+  const std::string flag = metric.at("flag").get<std::string>();
+  const analysis::BraceIndicators& indicators = run.result.indicators;
+  const bool raised = flag == "core_fracture"    ? indicators.core_fracture
+                      : flag == "casing_failure" ? indicators.casing_failure
+                                                 : indicators.global_buckling;
+  return {raised ? 1.0 : 0.0, flag};
+}
+
+constexpr std::array<std::string_view, 6> kIndicators{"max_steel_damage",
+                                                      "max_mortar_damage",
+                                                      "max_core_lateral_displacement",
+                                                      "max_casing_lateral_displacement",
+                                                      "max_buckling_half_waves",
+                                                      "cumulative_inelastic_deformation"};
+
+void check_max_indicator(const io::JsonValue& metric) {
+  one_of(metric.at("indicator", "the indicator of summary.json's element block"), "indicator",
+         {kIndicators[0], kIndicators[1], kIndicators[2], kIndicators[3], kIndicators[4],
+          kIndicators[5]});
+}
+
+/// A largest-over-the-run indicator of summary.json's element block.
+MetricValue evaluate_max_indicator(const Json& metric, const RunData& run) {
+  const std::string name = metric.at("indicator").get<std::string>();
+  const analysis::BraceIndicators& indicators = run.result.indicators;
+  double value = indicators.cumulative_inelastic_deformation;
+  if (name == "max_steel_damage")
+    value = indicators.max_steel_damage;
+  else if (name == "max_mortar_damage")
+    value = indicators.max_mortar_damage;
+  else if (name == "max_core_lateral_displacement")
+    value = indicators.max_core_lateral_displacement;
+  else if (name == "max_casing_lateral_displacement")
+    value = indicators.max_casing_lateral_displacement;
+  else if (name == "max_buckling_half_waves")
+    value = indicators.max_buckling_half_waves;
+  return {value, name};
+}
+
+const std::array<MetricKind, 6>& registry() {
+  static const std::array<MetricKind, 6> kinds{{
+      {"cycle_energy",
+       "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
+       "(\"amplitude_dy\")",
+       {"cycle", "amplitude_dy"},
+       false,
+       check_cycle_energy,
+       evaluate_cycle_energy},
+      {"peak_force",
+       "largest force magnitude (N) in \"direction\" tension or compression, in a cycle "
+       "(\"cycle\" or \"amplitude_dy\") or over the run",
+       {"direction", "cycle", "amplitude_dy"},
+       false,
+       check_peak_force,
+       evaluate_peak_force},
+      {"compression_tension_ratio",
+       "beta = Pmax / Tmax, in a cycle (\"cycle\" or \"amplitude_dy\") or over the run",
+       {"cycle", "amplitude_dy"},
+       false,
+       check_compression_tension_ratio,
+       evaluate_compression_tension_ratio},
+      {"yield_force",
+       "offset yield force (N) in \"direction\", offset \"offset_core_strain\" x yielding "
+       "length, elastic slope Py / dy",
+       {"direction", "offset_core_strain"},
+       false,
+       check_yield_force,
+       evaluate_yield_force},
+      {"flag",
+       "an element flag of summary.json (\"flag\"), compared with \"expected\"",
+       {"flag"},
+       true,
+       check_flag,
+       evaluate_flag},
+      {"max_indicator",
+       "a largest-over-the-run indicator of summary.json's element block (\"indicator\")",
+       {"indicator"},
+       false,
+       check_max_indicator,
+       evaluate_max_indicator},
+  }};
+  return kinds;
+}
+
+} // namespace
+
+std::span<const MetricKind> metric_kinds() {
+  return registry();
+}
+
+const MetricKind* find_metric_kind(std::string_view name) {
+  for (const MetricKind& kind : registry()) {
+    if (kind.name == name)
+      return &kind;
+  }
+  return nullptr;
+}
+
+std::string metric_kind_names() {
+  std::string names;
+  for (const MetricKind& kind : registry())
+    names += (names.empty() ? "" : ", ") + std::string(kind.name);
+  return names;
+}
+
+} // namespace brb::validation

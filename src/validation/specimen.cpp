@@ -1,0 +1,330 @@
+#include "brb/validation/specimen.hpp"
+
+#include "brb/io/input_error.hpp"
+#include "brb/io/json_input.hpp"
+#include "brb/validation/metric_kinds.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace brb::validation {
+namespace {
+
+namespace fs = std::filesystem;
+using io::JsonValue;
+
+/// The most refinements a specimen may list, and the largest multiplier (a guard against a
+/// typo that would make a run last days).
+constexpr std::size_t kMostRefinements = 8;
+constexpr int kLargestRefinement = 64;
+
+/// Record units accepted at the edge, with their factor to N or mm.
+constexpr double kNewtonPerKip = 4448.2216152605; // 1 kip = 1000 lbf, 1 lbf = 4.4482216152605 N
+constexpr double kMillimetrePerInch = 25.4;
+
+std::string string_of(const JsonValue& value, std::string_view meaning) {
+  return value.string(meaning);
+}
+
+bool boolean_of(const JsonValue& value, std::string_view meaning) {
+  if (!value.json().is_boolean()) {
+    throw value.error(std::string(meaning) + ": expected true or false, got " +
+                      io::describe_json_value(value.json()));
+  }
+  return value.json().get<bool>();
+}
+
+int refinement_of(const JsonValue& value) {
+  const double number = value.number("refinement (multiplier of every zone's element count)");
+  if (!(number >= 1.0 && number <= kLargestRefinement && number == std::floor(number))) {
+    throw value.error("a refinement must be a whole number from 1 to " +
+                      std::to_string(kLargestRefinement) + " (got " +
+                      io::describe_json_value(value.json()) + ")");
+  }
+  return static_cast<int>(number);
+}
+
+std::vector<int> read_refinements(const JsonValue& list) {
+  const std::size_t count =
+      list.expect_array(kMostRefinements, "refinements: a list of multipliers, e.g. [1, 2, 4]");
+  if (count == 0)
+    throw list.error("refinements: give at least one multiplier, e.g. [1]");
+  std::vector<int> refinements;
+  for (std::size_t i = 0; i < count; ++i) {
+    const int refinement = refinement_of(list.element(i));
+    if (std::find(refinements.begin(), refinements.end(), refinement) != refinements.end())
+      throw list.element(i).error("refinement " + std::to_string(refinement) + " listed twice");
+    refinements.push_back(refinement);
+  }
+  return refinements;
+}
+
+/// A file named in metrics.json, relative to the specimen's folder; it must exist.
+fs::path specimen_file(const JsonValue& value, std::string_view meaning,
+                       const fs::path& directory) {
+  const std::string name = string_of(value, meaning);
+  if (name.empty())
+    throw value.error(std::string(meaning) + ": must name a file");
+  const fs::path file = directory / name;
+  if (!fs::is_regular_file(file))
+    throw value.error(std::string(meaning) + ": no such file: " + file.string());
+  return file;
+}
+
+Tolerance read_tolerance(const JsonValue& value) {
+  value.expect_object({"relative", "absolute"},
+                      "tolerance: {\"relative\": fraction} or {\"absolute\": value}");
+  const std::optional<JsonValue> relative = value.find("relative");
+  const std::optional<JsonValue> absolute = value.find("absolute");
+  if (relative.has_value() == absolute.has_value()) {
+    throw value.error("tolerance: give exactly one of \"relative\" (a fraction of the "
+                      "reference) and \"absolute\" (in the metric's unit)");
+  }
+  const JsonValue& given = relative ? *relative : *absolute;
+  const double number = given.number("tolerance");
+  if (!(number >= 0.0))
+    throw given.error("tolerance must be >= 0 (got " + io::describe_json_value(given.json()) + ")");
+  return {relative ? Tolerance::Kind::relative : Tolerance::Kind::absolute, number};
+}
+
+/// The common keys of a metric object; a kind adds its own (MetricKind::keys).
+constexpr std::array<std::string_view, 10> kCommonMetricKeys{
+    "name",    "kind",     "reference", "tolerance", "at_least",
+    "at_most", "expected", "unit",      "source",    "note"};
+
+MetricSpec read_metric(const JsonValue& value, std::set<std::string>& names) {
+  if (!value.json().is_object())
+    throw value.error("a metric must be an object {\"name\": ..., \"kind\": ..., ...}");
+  const JsonValue kind_value = value.at("kind", "the metric's kind, one of " + metric_kind_names());
+  const std::string kind_name = string_of(kind_value, "kind");
+  const MetricKind* kind = find_metric_kind(kind_name);
+  if (kind == nullptr) {
+    throw kind_value.error("unknown metric kind \"" + kind_name +
+                           "\"; known kinds: " + metric_kind_names());
+  }
+  // Allowed keys: the common ones and the kind's. JsonValue::expect_object wants an
+  // initializer list; check the unknown keys here instead, with the same message form.
+  for (const auto& [key, member] : value.json().items()) {
+    const bool common = std::find(kCommonMetricKeys.begin(), kCommonMetricKeys.end(), key) !=
+                        kCommonMetricKeys.end();
+    const bool own = std::find(kind->keys.begin(), kind->keys.end(), key) != kind->keys.end();
+    if (!common && !own) {
+      std::string allowed;
+      for (const std::string_view name : kCommonMetricKeys)
+        allowed += (allowed.empty() ? "" : ", ") + std::string(name);
+      for (const std::string_view name : kind->keys)
+        allowed += ", " + std::string(name);
+      throw JsonValue(member, value.source(), io::json_pointer_append(value.path(), key))
+          .error("unknown key for a metric of kind \"" + kind_name +
+                 "\"; allowed keys are: " + allowed);
+    }
+  }
+  MetricSpec metric;
+  metric.kind = kind_name;
+  metric.parameters = value.json();
+  const JsonValue name = value.at("name", "the metric's name, unique in the file");
+  metric.name = string_of(name, "name");
+  if (metric.name.empty())
+    throw name.error("the metric's name must not be empty");
+  if (!names.insert(metric.name).second)
+    throw name.error("metric \"" + metric.name + "\" is defined twice");
+  kind->check(value);
+
+  if (const auto unit = value.find("unit"))
+    metric.unit = string_of(*unit, "unit of the metric's value");
+  if (const auto source = value.find("source"))
+    metric.source = string_of(*source, "source of the reference");
+  if (const auto note = value.find("note"))
+    string_of(*note, "note");
+
+  const std::optional<JsonValue> reference = value.find("reference");
+  const std::optional<JsonValue> tolerance = value.find("tolerance");
+  const std::optional<JsonValue> at_least = value.find("at_least");
+  const std::optional<JsonValue> at_most = value.find("at_most");
+  const std::optional<JsonValue> expected = value.find("expected");
+  if (kind->is_flag) {
+    for (const auto* judged : {&reference, &tolerance, &at_least, &at_most}) {
+      if (judged->has_value())
+        throw(*judged)->error("a flag is checked by \"expected\" (true or false) only");
+    }
+    if (!expected)
+      throw value.error("missing \"expected\": a flag metric says whether the flag should be "
+                        "raised (true) or not (false)");
+    metric.expected = boolean_of(*expected, "expected");
+    metric.unit = "-";
+    return metric;
+  }
+  if (expected)
+    throw expected->error("\"expected\" is for metrics of kind \"flag\" only");
+  if (reference.has_value() != tolerance.has_value()) {
+    throw(reference ? *reference : *tolerance)
+        .error("\"reference\" and \"tolerance\" go together: give both or neither");
+  }
+  if ((reference || tolerance) && (at_least || at_most)) {
+    throw(at_least ? *at_least : *at_most)
+        .error("give either a reference with a tolerance or bounds (at_least, at_most), not both");
+  }
+  if (reference) {
+    metric.reference = reference->number("reference value");
+    metric.tolerance = read_tolerance(*tolerance);
+  }
+  if (at_least)
+    metric.at_least = at_least->number("lower bound at_least");
+  if (at_most)
+    metric.at_most = at_most->number("upper bound at_most");
+  if (metric.at_least && metric.at_most && *metric.at_least > *metric.at_most)
+    throw at_most->error("at_most must be >= at_least");
+  return metric;
+}
+
+double force_factor(const JsonValue& unit) {
+  const std::string name = string_of(unit, "force unit of the record");
+  if (name == "N")
+    return 1.0;
+  if (name == "kN")
+    return 1000.0;
+  if (name == "kip")
+    return kNewtonPerKip;
+  throw unit.error("force unit of the record must be \"N\", \"kN\" or \"kip\" (got \"" + name +
+                   "\")");
+}
+
+double length_factor(const JsonValue& unit) {
+  const std::string name = string_of(unit, "length unit of the record");
+  if (name == "mm")
+    return 1.0;
+  if (name == "in")
+    return kMillimetrePerInch;
+  throw unit.error("length unit of the record must be \"mm\" or \"in\" (got \"" + name + "\")");
+}
+
+RecordReference read_record(const JsonValue& value, const fs::path& directory,
+                            const fs::path& shared_directory) {
+  value.expect_object({"file", "columns", "units"},
+                      "reference: the measured record {\"file\", \"columns\", \"units\"}");
+  RecordReference record;
+  const JsonValue file = value.at("file", "the record's CSV file (\"shared:...\" or relative "
+                                          "to the specimen's folder)");
+  record.written = string_of(file, "file");
+  const std::string_view prefix = shared_prefix;
+  if (record.written.rfind(prefix, 0) == 0)
+    record.file = shared_directory / record.written.substr(prefix.size());
+  else
+    record.file = directory / record.written;
+  if (!fs::is_regular_file(record.file))
+    throw file.error("no such file: " + record.file.string());
+
+  const JsonValue columns = value.at("columns", "{\"force\": column, \"deformation\": column}");
+  columns.expect_object({"force", "deformation"}, "columns: {\"force\", \"deformation\"}");
+  record.force_column = string_of(columns.at("force", "the force column's name"), "force column");
+  record.deformation_column =
+      string_of(columns.at("deformation", "the deformation column's name"), "deformation column");
+
+  const JsonValue units = value.at("units", "{\"force\": \"N\"|\"kN\"|\"kip\", \"length\": "
+                                            "\"mm\"|\"in\"}");
+  units.expect_object({"force", "length"}, "units: {\"force\", \"length\"}");
+  const JsonValue force_unit = units.at("force", "force unit: \"N\", \"kN\" or \"kip\"");
+  const JsonValue length_unit = units.at("length", "length unit: \"mm\" or \"in\"");
+  record.force_to_newton = force_factor(force_unit);
+  record.length_to_millimetre = length_factor(length_unit);
+  record.force_unit = force_unit.json().get<std::string>();
+  record.length_unit = length_unit.json().get<std::string>();
+  return record;
+}
+
+} // namespace
+
+Specimen read_specimen(const fs::path& directory, const fs::path& shared_directory) {
+  Specimen specimen;
+  specimen.directory = directory;
+  specimen.metrics_file = directory / metrics_file_name;
+  const nlohmann::json document = io::read_json_file(specimen.metrics_file);
+  const JsonValue root(document, specimen.metrics_file.string());
+  root.expect_object({"id", "title", "source", "brace", "protocol", "refinements", "reference",
+                      "notes", "metrics"},
+                     "a specimen's metrics file (an object)");
+
+  const JsonValue id = root.at("id", "the specimen's id, the name of its folder");
+  specimen.id = string_of(id, "id");
+  const std::string folder =
+      directory.filename().empty() ? directory.parent_path().filename() : directory.filename();
+  if (specimen.id != folder) {
+    throw id.error("the id must be the folder's name \"" + folder + "\" (got \"" + specimen.id +
+                   "\")");
+  }
+  specimen.title = string_of(root.at("title", "a one-line title"), "title");
+  specimen.source = string_of(root.at("source", "where the specimen's data come from"), "source");
+  specimen.brace_file =
+      specimen_file(root.at("brace", "the brace file, e.g. \"brace.json\""), "brace", directory);
+  specimen.protocol_file =
+      specimen_file(root.at("protocol", "the protocol file, \"protocol.json\" or \"protocol.csv\""),
+                    "protocol", directory);
+  const std::string extension = specimen.protocol_file.extension().string();
+  if (extension != ".json" && extension != ".csv") {
+    throw root.at("protocol", "")
+        .error("the protocol must be a .json protocol file or a .csv "
+               "deformation history (got \"" +
+               specimen.protocol_file.filename().string() + "\")");
+  }
+  specimen.refinements = read_refinements(root.at("refinements", "e.g. [1, 2, 4]"));
+  if (const auto record = root.find("reference"))
+    specimen.record = read_record(*record, directory, shared_directory);
+  if (const auto notes = root.find("notes")) {
+    const std::size_t count = notes->expect_array(1000, "notes: a list of strings");
+    for (std::size_t i = 0; i < count; ++i)
+      specimen.notes.push_back(string_of(notes->element(i), "note"));
+  }
+  const JsonValue metrics = root.at("metrics", "the list of metrics");
+  const std::size_t count = metrics.expect_array(1000, "metrics: a list of metric objects");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < count; ++i)
+    specimen.metrics.push_back(read_metric(metrics.element(i), names));
+  return specimen;
+}
+
+std::vector<fs::path> find_specimen_directories(const fs::path& validation_directory) {
+  if (!fs::is_directory(validation_directory)) {
+    throw io::InputError(validation_directory.string(), "",
+                         "not a directory: expected the validation folder (e.g. validation/)");
+  }
+  std::vector<fs::path> directories;
+  for (const fs::directory_entry& entry : fs::directory_iterator(validation_directory)) {
+    if (entry.is_directory() && fs::is_regular_file(entry.path() / metrics_file_name))
+      directories.push_back(entry.path());
+  }
+  std::sort(directories.begin(), directories.end());
+  return directories;
+}
+
+std::vector<int> parse_refinement_list(const std::string& text) {
+  std::vector<int> refinements;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || value < 1 || value > kLargestRefinement) {
+      throw std::invalid_argument("expected whole numbers from 1 to " +
+                                  std::to_string(kLargestRefinement) +
+                                  " separated by commas, e.g. 1,2,4 (got \"" + text + "\")");
+    }
+    if (std::find(refinements.begin(), refinements.end(), value) == refinements.end())
+      refinements.push_back(value);
+  }
+  if (refinements.empty())
+    throw std::invalid_argument("expected at least one refinement, e.g. 1,2,4");
+  return refinements;
+}
+
+} // namespace brb::validation

@@ -1,0 +1,201 @@
+#include "brb/validation/specimen_run.hpp"
+
+#include "brb/io/atomic_file.hpp"
+#include "brb/io/brace_input.hpp"
+#include "brb/io/cyclic_output.hpp"
+#include "brb/io/json_input.hpp"
+#include "brb/io/material_input.hpp"
+#include "brb/io/protocol.hpp"
+#include "brb/material/parameter_error.hpp"
+#include "brb/model/brace_model.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+namespace brb::validation {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Protocols that give no max_step are followed in steps of dy / 10, as `brb cyclic` does.
+constexpr double kDefaultStepsPerYieldDeformation = 10.0;
+
+/// The brace's model; a ParameterError (inconsistent geometry) becomes an InputError at its
+/// JSON path in the brace file, as in `brb cyclic`.
+model::BraceModel build_checked(const model::BraceSpec& spec, const fs::path& file) {
+  try {
+    return model::build_brace_model(spec);
+  } catch (const ParameterError& error) {
+    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
+  }
+}
+
+io::LoadingProtocol read_protocol_for(const fs::path& file, double yield_deformation) {
+  return io::read_protocol(file, yield_deformation,
+                           yield_deformation / kDefaultStepsPerYieldDeformation);
+}
+
+bool within(const Tolerance& tolerance, double error) {
+  return std::abs(error) <= tolerance.value;
+}
+
+} // namespace
+
+std::string to_string(CheckStatus status) {
+  switch (status) {
+  case CheckStatus::pass:
+    return "pass";
+  case CheckStatus::fail:
+    return "FAIL";
+  case CheckStatus::reported:
+    break;
+  }
+  return "reported";
+}
+
+CheckResult judge(const MetricSpec& metric, const MetricValue& value) {
+  CheckResult check;
+  check.name = metric.name;
+  check.kind = metric.kind;
+  check.unit = metric.unit;
+  check.value = value.value;
+  check.reference = metric.reference;
+  check.tolerance = metric.tolerance;
+  check.at_least = metric.at_least;
+  check.at_most = metric.at_most;
+  check.expected = metric.expected;
+  check.note = value.note;
+  check.source = metric.source;
+
+  const bool judged = metric.reference || metric.at_least || metric.at_most || metric.expected;
+  if (!judged) {
+    check.status = CheckStatus::reported;
+    return check;
+  }
+  if (!value.value) {
+    check.status = CheckStatus::fail; // a check that cannot be made is not passed
+    return check;
+  }
+  const double result = *value.value;
+  bool passed = true;
+  if (metric.expected)
+    passed = (result != 0.0) == *metric.expected;
+  if (metric.reference) {
+    const double difference = result - *metric.reference;
+    const bool relative = metric.tolerance->kind == Tolerance::Kind::relative;
+    if (relative && *metric.reference == 0.0) {
+      passed = false; // a relative error to 0 is undefined: the file should say absolute
+      check.note +=
+          (check.note.empty() ? "" : "; ") + std::string("relative tolerance on a zero reference");
+    } else {
+      check.error = relative ? difference / std::abs(*metric.reference) : difference;
+      passed = within(*metric.tolerance, *check.error);
+    }
+  }
+  if (metric.at_least && !(result >= *metric.at_least))
+    passed = false;
+  if (metric.at_most && !(result <= *metric.at_most))
+    passed = false;
+  check.status = passed ? CheckStatus::pass : CheckStatus::fail;
+  return check;
+}
+
+std::vector<CheckResult> automatic_checks(const analysis::CyclicTestResult& result) {
+  CheckResult completion;
+  completion.name = "protocol completed";
+  completion.kind = "completion";
+  completion.unit = "-";
+  completion.value = result.completed ? 1.0 : 0.0;
+  completion.expected = true;
+  completion.status = result.completed ? CheckStatus::pass : CheckStatus::fail;
+  completion.note = result.completed ? "all steps" : result.stop_reason;
+  completion.source = "automatic: every run must follow its whole protocol";
+
+  CheckResult balance;
+  balance.name = "energy balance error";
+  balance.kind = "energy_balance";
+  balance.unit = "-";
+  const double error = result.energy_balance.relative_error();
+  balance.value = error;
+  balance.at_most = energy_balance_tolerance;
+  balance.status = std::isfinite(error) && error <= energy_balance_tolerance ? CheckStatus::pass
+                                                                             : CheckStatus::fail;
+  balance.note = "abs(external - stored - dissipated - released) / external";
+  balance.source = "automatic: the issue's target 1e-6";
+  return {completion, balance};
+}
+
+model::BraceSpec refined(const model::BraceSpec& spec, int refinement) {
+  model::BraceSpec finer = spec;
+  finer.core_elements *= refinement;
+  if (finer.transition)
+    finer.transition->elements *= refinement;
+  if (finer.connection)
+    finer.connection->elements *= refinement;
+  return finer;
+}
+
+PreparedSpecimen prepare_specimen(Specimen specimen) {
+  PreparedSpecimen prepared;
+  prepared.brace = io::read_brace(specimen.brace_file);
+  if (prepared.brace.name.empty())
+    prepared.brace.name = specimen.id;
+  const model::BraceModel model = build_checked(prepared.brace, specimen.brace_file);
+  prepared.yield_deformation = model.yield_deformation;
+  prepared.yield_force = model.yield_force;
+  prepared.protocol_points =
+      read_protocol_for(specimen.protocol_file, model.yield_deformation).deformation.size();
+  prepared.specimen = std::move(specimen);
+  return prepared;
+}
+
+std::vector<CheckResult> evaluate_checks(const Specimen& specimen, const RunData& run) {
+  std::vector<CheckResult> checks = automatic_checks(run.result);
+  for (const MetricSpec& metric : specimen.metrics) {
+    const MetricKind* kind = find_metric_kind(metric.kind);
+    checks.push_back(judge(metric, kind->evaluate(metric.parameters, run)));
+  }
+  return checks;
+}
+
+RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
+                        const fs::path& output_directory) {
+  const model::BraceSpec spec = refined(prepared.brace, refinement);
+  model::BraceModel brace = build_checked(spec, prepared.specimen.brace_file);
+  const io::LoadingProtocol protocol =
+      read_protocol_for(prepared.specimen.protocol_file, brace.yield_deformation);
+
+  const auto start = std::chrono::steady_clock::now();
+  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
+      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+
+  fs::create_directories(output_directory);
+  io::write_file_atomically(output_directory / "hysteresis.csv",
+                            io::hysteresis_table(result).text());
+  io::write_file_atomically(
+      output_directory / "summary.json",
+      io::cyclic_summary_json(spec.name, brace.yield_deformation, brace.yield_force, result)
+              .dump(2) +
+          "\n");
+
+  RunOutcome outcome;
+  outcome.refinement = refinement;
+  outcome.core_elements = spec.core_elements;
+  outcome.output_directory = output_directory;
+  outcome.completed = result.completed;
+  outcome.stop_reason = result.stop_reason;
+  outcome.steps = io::converged_steps(result);
+  outcome.planned_steps = static_cast<int>(protocol.deformation.size()) - 1;
+  outcome.iterations = result.iterations;
+  outcome.run_seconds = elapsed.count();
+  outcome.energy_balance_error = result.energy_balance.relative_error();
+  outcome.yield_deformation = brace.yield_deformation;
+  outcome.yield_force = brace.yield_force;
+  const RunData run{result, brace.yield_deformation, brace.yield_force, spec.yielding_length};
+  outcome.checks = evaluate_checks(prepared.specimen, run);
+  return outcome;
+}
+
+} // namespace brb::validation

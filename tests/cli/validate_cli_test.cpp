@@ -1,0 +1,166 @@
+// `brb validate` end to end: the real binary (BRB_CLI_PATH) on a validation folder made in a
+// temporary directory, with one tiny specimen (a short, stocky bare plate core through one
+// cycle at 2 dy) so that each run takes a fraction of a second.
+#include "cli/run_brb.hpp"
+#include "io/scratch_directory.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using brb::testing::CliRun;
+using brb::testing::read_file;
+using brb::testing::run_brb;
+using brb::testing::ScratchDirectory;
+using brb::testing::shell_quoted;
+using nlohmann::json;
+
+namespace fs = std::filesystem;
+
+// The tiny specimen: a 12 x 10 mm S275 plate, 100 mm long, fixed ends, linear kinematic
+// hardening 21000 MPa (stocky: it does not buckle at 2 dy). Py = 275 x 120 = 33000 N.
+constexpr double kYieldForce = 275.0 * 12.0 * 10.0; // N
+
+json tiny_brace() {
+  return {
+      {"name", "tiny"},
+      {"core",
+       {{"section", {{"shape", "rectangle"}, {"width", 12.0}, {"depth", 10.0}, {"fibers", {4, 4}}}},
+        {"steel",
+         {{"E", 210000.0}, {"nu", 0.3}, {"fy", 275.0}, {"H_kin", 21000.0}, {"H_iso", 0.0}}},
+        {"yielding_length", 100.0},
+        {"elements", 4}}},
+      {"ends", "fixed"}};
+}
+
+json tiny_metrics() {
+  return {{"id", "tiny"},
+          {"title", "a stocky bare plate"},
+          {"source", "this test"},
+          {"brace", "brace.json"},
+          {"protocol", "protocol.json"},
+          {"refinements", {1}},
+          {"metrics",
+           {// Past yield at 2 dy with positive hardening, the peak tension exceeds Py.
+            {{"name", "peak tension"},
+             {"kind", "peak_force"},
+             {"direction", "tension"},
+             {"at_least", kYieldForce},
+             {"unit", "N"},
+             {"source", "hardening: F > Py = fy A past yield"}},
+            {{"name", "no global buckling"},
+             {"kind", "flag"},
+             {"flag", "global_buckling"},
+             {"expected", false}},
+            {{"name", "loop energy"}, {"kind", "cycle_energy"}, {"cycle", 1}, {"unit", "N mm"}}}}};
+}
+
+/// A validation folder with the tiny specimen; `metrics` replaces its metrics.json.
+fs::path make_folder(const ScratchDirectory& scratch, const json& metrics = tiny_metrics()) {
+  fs::create_directories(scratch.path() / "validation" / "tiny");
+  scratch.write("validation/tiny/brace.json", tiny_brace().dump(2));
+  scratch.write("validation/tiny/protocol.json",
+                R"({"units": "dy", "cycles": [{"amplitude": 2, "cycles": 1}], "max_step": 0.25})");
+  scratch.write("validation/tiny/metrics.json", "// comments allowed\n" + metrics.dump(2));
+  return scratch.path() / "validation";
+}
+
+TEST(ValidateCli, RunsEveryRefinementAndWritesTheReports) {
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  const CliRun run = run_brb("validate " + shell_quoted(folder.string()) + " --refinements 1,2");
+  ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+
+  const json report = json::parse(read_file(folder / "report.json"));
+  // Exit status 0 exactly when every check passed.
+  EXPECT_EQ(run.exit_code == 0, report.at("passed").get<bool>()) << run.out;
+  const json& runs = report.at("specimens").at(0).at("runs");
+  ASSERT_EQ(runs.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const int refinement = static_cast<int>(i) + 1;
+    EXPECT_EQ(runs[i].at("refinement"), refinement);
+    EXPECT_EQ(runs[i].at("core_elements"), 4 * refinement);
+    EXPECT_TRUE(runs[i].at("completed").get<bool>());
+    std::string run_folder = "x"; // appended, not "x" + ...: GCC 12 warns falsely (-Wrestrict)
+    run_folder += std::to_string(refinement);
+    const fs::path outputs = folder / "tiny" / "out" / run_folder;
+    EXPECT_TRUE(fs::is_regular_file(outputs / "hysteresis.csv"));
+    EXPECT_TRUE(fs::is_regular_file(outputs / "summary.json"));
+    const json& checks = runs[i].at("checks");
+    ASSERT_EQ(checks.size(), 5u); // completion, energy balance, then the three metrics
+    EXPECT_EQ(checks[0].at("status"), "pass");
+    // The energy balance is judged against 1e-6, whatever the solver gives.
+    const double balance = checks[1].at("value").get<double>();
+    EXPECT_EQ(checks[1].at("status"), balance <= 1e-6 ? "pass" : "fail");
+    EXPECT_EQ(checks[2].at("name"), "peak tension");
+    EXPECT_EQ(checks[2].at("status"), "pass");
+    EXPECT_GT(checks[2].at("value").get<double>(), kYieldForce);
+    EXPECT_EQ(checks[3].at("status"), "pass");
+    EXPECT_EQ(checks[4].at("status"), "reported");
+    // The loop energy is the summary's energy of cycle 1 (same trapezoidal rule).
+    const json summary = json::parse(read_file(outputs / "summary.json"));
+    EXPECT_NEAR(checks[4].at("value").get<double>(),
+                summary.at("cycles").at(0).at("energy").get<double>(),
+                1e-9 * summary.at("cycles").at(0).at("energy").get<double>());
+  }
+  const std::string markdown = read_file(folder / "REPORT.md");
+  EXPECT_EQ(markdown.rfind("# Validation report\n\n**", 0), 0u) << markdown;
+  EXPECT_NE(markdown.find("### tiny, refinement x2 (8 core elements)"), std::string::npos);
+  EXPECT_NE(run.out.find("brb validate: "), std::string::npos) << run.out;
+}
+
+TEST(ValidateCli, ReportOptionChoosesWhereBothReportsGo) {
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  const fs::path report = scratch.path() / "tiny-report.md";
+  const CliRun run = run_brb("validate " + shell_quoted(folder.string()) +
+                             " --only tiny --report " + shell_quoted(report.string()));
+  ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
+  EXPECT_TRUE(fs::is_regular_file(report));
+  EXPECT_TRUE(fs::is_regular_file(scratch.path() / "tiny-report.json"));
+  EXPECT_FALSE(fs::exists(folder / "REPORT.md"));
+}
+
+TEST(ValidateCli, InputErrorsExitWithTwoAndWriteNothing) {
+  const ScratchDirectory scratch;
+  json metrics = tiny_metrics();
+  metrics["metrics"][0]["kind"] = "peak";
+  const fs::path folder = make_folder(scratch, metrics);
+  const CliRun bad_kind = run_brb("validate " + shell_quoted(folder.string()));
+  EXPECT_EQ(bad_kind.exit_code, 2);
+  EXPECT_NE(bad_kind.err.find("metrics.json: /metrics/0/kind: unknown metric kind \"peak\""),
+            std::string::npos)
+      << bad_kind.err;
+  EXPECT_FALSE(fs::exists(folder / "REPORT.md"));
+  EXPECT_FALSE(fs::exists(folder / "tiny" / "out"));
+
+  const fs::path good = make_folder(scratch);
+  const CliRun unknown = run_brb("validate " + shell_quoted(good.string()) + " --only nobody");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--only: no specimen \"nobody\""), std::string::npos) << unknown.err;
+
+  json brace = tiny_brace();
+  brace["core"]["yielding_length"] = -100.0;
+  scratch.write("validation/tiny/brace.json", brace.dump());
+  const CliRun bad_brace = run_brb("validate " + shell_quoted(good.string()));
+  EXPECT_EQ(bad_brace.exit_code, 2);
+  EXPECT_NE(bad_brace.err.find("brace.json: /core/yielding_length"), std::string::npos)
+      << bad_brace.err;
+  EXPECT_FALSE(fs::exists(good / "REPORT.md"));
+  EXPECT_FALSE(fs::exists(good / "tiny" / "out"));
+
+  const CliRun bad_option = run_brb("validate " + shell_quoted(good.string()) + " --refinements 0");
+  EXPECT_EQ(bad_option.exit_code, 2);
+  EXPECT_NE(bad_option.err.find("--refinements"), std::string::npos) << bad_option.err;
+
+  const CliRun no_folder = run_brb("validate " + shell_quoted((scratch.path() / "none").string()));
+  EXPECT_EQ(no_folder.exit_code, 2);
+  EXPECT_NE(no_folder.err.find("not a directory"), std::string::npos) << no_folder.err;
+}
+
+} // namespace
