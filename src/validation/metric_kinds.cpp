@@ -301,8 +301,63 @@ MetricValue evaluate_max_indicator(const Json& metric, const RunData& run) {
   return {value, name};
 }
 
-const std::array<MetricKind, 6>& registry() {
-  static const std::array<MetricKind, 6> kinds{{
+void check_cycle_energy_spread(const io::JsonValue& metric) {
+  const int first = positive_whole_number(metric.at("first_cycle", "first cycle (1-based)"),
+                                          "first cycle (1-based)");
+  const io::JsonValue last_value = metric.at("last_cycle", "last cycle (1-based)");
+  const int last = positive_whole_number(last_value, "last cycle (1-based)");
+  if (!(last > first))
+    throw last_value.error("the last cycle must come after the first");
+}
+
+/// (largest - smallest) / mean of the loop energies of cycles first..last: how stable a
+/// series of equal cycles is (summary.json's cycle energies, trapezoidal).
+MetricValue evaluate_cycle_energy_spread(const Json& metric, const RunData& run) {
+  const int first = metric.at("first_cycle").get<int>();
+  const int last = metric.at("last_cycle").get<int>();
+  std::vector<double> energies;
+  for (const analysis::CycleMetrics& cycle : run.result.cycles) {
+    if (cycle.index >= first && cycle.index <= last)
+      energies.push_back(cycle.energy);
+  }
+  const std::string label = "cycles " + std::to_string(first) + " to " + std::to_string(last);
+  if (energies.size() != static_cast<std::size_t>(last - first + 1))
+    return {std::nullopt, label + ": not all were completed"};
+  const auto [smallest, largest] = std::minmax_element(energies.begin(), energies.end());
+  double mean = 0.0;
+  for (const double energy : energies)
+    mean += energy / static_cast<double>(energies.size());
+  if (!(mean > 0.0))
+    return {std::nullopt, label + ": no energy dissipated"};
+  return {(*largest - *smallest) / mean, label};
+}
+
+void check_residual_compression_ratio(const io::JsonValue& metric) {
+  check_cycle_selector(metric, false);
+}
+
+/// The compression force at the point of largest shortening over the peak compression (in
+/// a cycle or over the run): 1 when the brace holds its strength to the end of the
+/// excursion, near 0 when it lost it (a failed casing, global buckling).
+MetricValue evaluate_residual_compression_ratio(const Json& metric, const RunData& run) {
+  const CycleLookup lookup = points_of(metric, run);
+  if (!lookup.span)
+    return {std::nullopt, lookup.note};
+  const std::vector<CyclicStep>& steps = run.result.steps;
+  std::size_t shortest = lookup.span->own_first;
+  for (std::size_t i = lookup.span->own_first; i <= lookup.span->last; ++i) {
+    if (steps[i].deformation < steps[shortest].deformation)
+      shortest = i;
+  }
+  const Peaks peaks = peaks_over(steps, *lookup.span);
+  if (!(peaks.compression > 0.0) || !(steps[shortest].deformation < 0.0))
+    return {std::nullopt, lookup.span->label + ": no compression"};
+  return {-steps[shortest].force / peaks.compression,
+          lookup.span->label + ", at " + format_fixed(steps[shortest].deformation, 3) + " mm"};
+}
+
+const std::array<MetricKind, 8>& registry() {
+  static const std::array<MetricKind, 8> kinds{{
       {"cycle_energy",
        "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
        "(\"amplitude_dy\")",
@@ -342,6 +397,19 @@ const std::array<MetricKind, 6>& registry() {
        false,
        check_max_indicator,
        evaluate_max_indicator},
+      {"cycle_energy_spread",
+       "(largest - smallest) / mean loop energy of cycles \"first_cycle\" to \"last_cycle\"",
+       {"first_cycle", "last_cycle"},
+       false,
+       check_cycle_energy_spread,
+       evaluate_cycle_energy_spread},
+      {"residual_compression_ratio",
+       "compression force at the largest shortening over the peak compression, in a cycle "
+       "(\"cycle\" or \"amplitude_dy\") or over the run",
+       {"cycle", "amplitude_dy"},
+       false,
+       check_residual_compression_ratio,
+       evaluate_residual_compression_ratio},
   }};
   return kinds;
 }

@@ -69,6 +69,40 @@ MetricValue evaluate(const json& metric, const CyclicTestResult& result,
   return find_metric_kind(metric.at("kind").get<std::string>())->evaluate(metric, run);
 }
 
+TEST(CycleEnergySpread, RangeOverMeanOfTheChosenCycles) {
+  // Reference (definition): energies 100, 102, 98 N mm -> (102 - 98) / 100 = 0.04; cycle 1
+  // (1000 N mm) is outside the range asked for.
+  CyclicTestResult result = three_rectangles();
+  result.cycles = {CycleMetrics{1, 1.0, 1000.0, 0.0, 0.0}, CycleMetrics{2, 1.0, 100.0, 0.0, 0.0},
+                   CycleMetrics{3, 1.0, 102.0, 0.0, 0.0}, CycleMetrics{4, 1.0, 98.0, 0.0, 0.0}};
+  const MetricValue spread =
+      evaluate({{"kind", "cycle_energy_spread"}, {"first_cycle", 2}, {"last_cycle", 4}}, result);
+  ASSERT_TRUE(spread.value);
+  EXPECT_NEAR(*spread.value, 0.04, 1e-12);
+  const MetricValue beyond =
+      evaluate({{"kind", "cycle_energy_spread"}, {"first_cycle", 2}, {"last_cycle", 5}}, result);
+  EXPECT_FALSE(beyond.value);
+}
+
+TEST(ResidualCompressionRatio, ForceAtTheLargestShorteningOverThePeak) {
+  // Reference (definition): a compression excursion that peaks at -1000 N at -2 mm and falls
+  // to -50 N at -3 mm (the largest shortening), then recovers in tension: 50 / 1000.
+  CyclicTestResult result;
+  const std::vector<std::pair<double, double>> path{{0.0, 0.0},    {-1.0, -800.0}, {-2.0, -1000.0},
+                                                    {-3.0, -50.0}, {-1.0, 900.0},  {1.0, 1100.0}};
+  for (const auto& [deformation, force] : path) {
+    CyclicStep step;
+    step.step = static_cast<int>(result.steps.size());
+    step.cycle = 1;
+    step.deformation = deformation;
+    step.force = force;
+    result.steps.push_back(step);
+  }
+  const MetricValue ratio = evaluate({{"kind", "residual_compression_ratio"}}, result);
+  ASSERT_TRUE(ratio.value);
+  EXPECT_NEAR(*ratio.value, 0.05, 1e-12);
+}
+
 TEST(CycleEnergy, RectangleLoopAreaIsWidthTimesHeight) {
   const CyclicTestResult result = three_rectangles();
   // cycle 1: 2a x 2.2F = 10 x 2200; cycle 3: 4a x 4.5F = 20 x 4500.
@@ -234,7 +268,7 @@ TEST(Judge, BoundsFlagsMissingValuesAndReportedValues) {
 TEST(AutomaticChecks, CompletionAndEnergyBalanceAgainstOneInAMillion) {
   CyclicTestResult result = three_rectangles();
   result.energy_balance.external_work = 1000.0;
-  result.energy_balance.gross_work = 1000.0; // the balance's scale (EnergyBalance)
+  result.energy_balance.gross_work = 1000.0;        // the balance's scale (EnergyBalance)
   result.energy_balance.dissipated = 1000.0 - 5e-4; // relative error 5e-7
   auto checks = brb::validation::automatic_checks(result);
   ASSERT_EQ(checks.size(), 2u);
