@@ -1,5 +1,6 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
+#include "calibrate_command.hpp"
 #include "cyclic_command.hpp"
 #include "material_command.hpp"
 
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
   const CLI::App* material = brb::cli::add_material_command(app, material_command);
   brb::cli::CyclicCommand cyclic_command;
   const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
+  brb::cli::CalibrateCommand calibrate_command;
+  const CLI::App* calibrate = brb::cli::add_calibrate_command(app, calibrate_command);
 
   try {
     app.parse(argc, argv);
@@ -34,8 +37,9 @@ int main(int argc, char** argv) {
     if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
       return app.exit(error); // --help
     }
-    std::cerr << "brb: error: " << error.what() << "\n"
-              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic) for usage.\n";
+    std::cerr
+        << "brb: error: " << error.what() << "\n"
+        << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, calibrate) for usage.\n";
     return kInvalidInput;
   }
 
@@ -44,6 +48,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_material_command(material_command, std::cerr);
     if (cyclic->parsed())
       return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
+    if (calibrate->parsed())
+      return brb::cli::run_calibrate_command(calibrate_command, std::cout);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

@@ -73,8 +73,9 @@ ForceRecord read_force_record(const std::filesystem::path& file, const ForceReco
   const NumericColumn forces = read_numeric_column(file, format.force_column);
   const NumericColumn deformations = read_numeric_column(file, format.deformation_column);
   if (forces.lines != deformations.lines) {
-    throw InputError(source, "", "the columns '" + format.force_column + "' and '" +
-                                     format.deformation_column + "' list different rows");
+    throw InputError(source, "",
+                     "the columns '" + format.force_column + "' and '" + format.deformation_column +
+                         "' list different rows");
   }
 
   ForceRecord record;

@@ -97,9 +97,8 @@ RecordComparison compare_with_record(std::span<const double> deformation,
     result.max_cycle_energy_error = std::max(result.max_cycle_energy_error, cycle.energy_error());
     // A model without positive force in the cycle has a NaN beta: the worst difference.
     const double beta = cycle.beta_difference();
-    result.max_beta_difference = std::isnan(beta)
-                                     ? std::numeric_limits<double>::infinity()
-                                     : std::max(result.max_beta_difference, beta);
+    result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
+                                                  : std::max(result.max_beta_difference, beta);
   }
   return result;
 }

@@ -49,8 +49,8 @@ std::vector<double> fast_brace_forces(const material::SteelParameters& steel,
   double strain = 0.0;
   double force = 0.0;
   for (const double delta : deformation) {
-    const double tolerance = 1e-12 * (std::abs(delta) + length * steel.yield_stress /
-                                                            steel.youngs_modulus);
+    const double tolerance =
+        1e-12 * (std::abs(delta) + length * steel.yield_stress / steel.youngs_modulus);
     // Bracket: with the force at the previous point, the end zones take N f_e; the core
     // strain lies between the strains for zero force and for "all deformation in the core".
     double low = std::min(delta / length, (delta - force * flexibility) / length);
@@ -123,9 +123,13 @@ CalibrationBounds CalibrationBounds::for_start(const material::SteelParameters& 
 
 namespace {
 
-double logistic(double u) { return 1.0 / (1.0 + std::exp(-u)); }
+double logistic(double u) {
+  return 1.0 / (1.0 + std::exp(-u));
+}
 
-double logit(double s) { return std::log(s / (1.0 - s)); }
+double logit(double s) {
+  return std::log(s / (1.0 - s));
+}
 
 /// Bounds by transformation: parameter = lower + (upper - lower) s(u) (or the same on
 /// log(parameter)), s the logistic function, so every real u is a parameter within bounds and
@@ -171,12 +175,10 @@ double masked_error(std::span<const double> model, std::span<const double> test,
 
 } // namespace
 
-CalibrationResult calibrate_steel(const material::SteelParameters& start,
-                                  const AxialBraceIdealisation& brace,
-                                  std::span<const double> deformation,
-                                  std::span<const double> test_force,
-                                  const std::vector<bool>& compared,
-                                  const CalibrationOptions& options) {
+CalibrationResult
+calibrate_steel(const material::SteelParameters& start, const AxialBraceIdealisation& brace,
+                std::span<const double> deformation, std::span<const double> test_force,
+                const std::vector<bool>& compared, const CalibrationOptions& options) {
   if (deformation.size() != test_force.size() || compared.size() != test_force.size())
     throw std::invalid_argument("calibrate_steel: the series differ in length");
   std::vector<bool> all = compared;
@@ -192,7 +194,12 @@ CalibrationResult calibrate_steel(const material::SteelParameters& start,
   // structural mild steel fits (order of magnitude), not tuned to any record.
   const double initial[CalibrationBounds::kCount] = {
       std::clamp(start.yield_stress, bounds.lower[0] * 1.0001, bounds.upper[0] * 0.9999),
-      6000.0, 100.0, 1000.0, 10.0, 40.0, 5.0};
+      6000.0,
+      100.0,
+      1000.0,
+      10.0,
+      40.0,
+      5.0};
   std::vector<double> u(CalibrationBounds::kCount);
   for (int i = 0; i < CalibrationBounds::kCount; ++i)
     u[i] = to_unbounded(bounds, i, initial[i]);
@@ -205,8 +212,7 @@ CalibrationResult calibrate_steel(const material::SteelParameters& start,
   };
   const auto objective = [&](const std::vector<double>& point) {
     try {
-      const std::vector<double> model =
-          fast_brace_forces(parameters_of(point), brace, deformation);
+      const std::vector<double> model = fast_brace_forces(parameters_of(point), brace, deformation);
       return masked_error(model, test_force, objective_mask);
     } catch (const std::runtime_error&) {
       return std::numeric_limits<double>::infinity();
@@ -226,8 +232,8 @@ CalibrationResult calibrate_steel(const material::SteelParameters& start,
   result.model_force = fast_brace_forces(result.steel, brace, deformation);
   result.error_all = masked_error(result.model_force, test_force, all);
   result.error_tension = masked_error(result.model_force, test_force, tension);
-  result.objective = options.side == CalibrationSide::tension ? result.error_tension
-                                                               : result.error_all;
+  result.objective =
+      options.side == CalibrationSide::tension ? result.error_tension : result.error_all;
   if (options.max_evaluations == 0) {
     result.start_objective = result.objective;
     result.evaluations = 1;

@@ -88,9 +88,9 @@ TEST(ForceRecord, ErrorsNameTheFileAndPlace) {
   }
   auto all_excluded = kip_inch_format();
   all_excluded.excluded_rows = {{0, std::nullopt}};
-  EXPECT_THROW(read_force_record(scratch.write("c.csv", "Force[kip],Deformation[in]\n1,2\n"),
-                                 all_excluded),
-               InputError);
+  EXPECT_THROW(
+      read_force_record(scratch.write("c.csv", "Force[kip],Deformation[in]\n1,2\n"), all_excluded),
+      InputError);
   auto unknown_unit = kip_inch_format();
   unknown_unit.force_unit = "lbf";
   EXPECT_THROW(read_force_record(bad_cell, unknown_unit), InputError);

@@ -46,9 +46,9 @@ TEST(RecordComparison, NormalisedRmsErrorOfAScaledForceIsTheScale) {
     model.push_back(1.1 * f);
   EXPECT_NEAR(normalised_rms_force_error(model, test), 0.1, 1e-12);
   // Hand computed: differences (1, 0), test (3, 4): sqrt(1 / 25) = 0.2.
-  EXPECT_NEAR(normalised_rms_force_error(std::vector<double>{4.0, 4.0},
-                                         std::vector<double>{3.0, 4.0}),
-              0.2, 1e-12);
+  EXPECT_NEAR(
+      normalised_rms_force_error(std::vector<double>{4.0, 4.0}, std::vector<double>{3.0, 4.0}), 0.2,
+      1e-12);
   EXPECT_THROW(normalised_rms_force_error(std::vector<double>{1.0}, std::vector<double>{0.0}),
                std::invalid_argument);
 }
@@ -105,7 +105,7 @@ TEST(RecordComparison, NearlyElasticCyclesBelowTheEnergyFloorAreNotScored) {
   // about the residual state, then back to the plastic maximum.
   Loops path = parallelogram_loops(stiffness, fy, fy, 1.0, 1);
   path.deformation.resize(7);
-  path.force.resize(7); // ends at the second maximum (1, Fy)
+  path.force.resize(7);                         // ends at the second maximum (1, Fy)
   const double residual = 1.0 - fy / stiffness; // zero force
   path.add(residual, 0.0);
   path.add(residual - 0.05, -5.0);

@@ -25,10 +25,10 @@ namespace brb::validation {
 /// The brace seen axially: core area and yielding length, and the flexibility of its end
 /// zones.
 struct AxialBraceIdealisation {
-  double core_area = 0.0;             ///< A_c (mm^2)
-  double yielding_length = 0.0;       ///< L_y (mm)
-  double end_zone_flexibility = 0.0;  ///< sum 2 L_i / (E A_i) over transition and connection (mm/N)
-  double youngs_modulus = 0.0;        ///< E (MPa)
+  double core_area = 0.0;            ///< A_c (mm^2)
+  double yielding_length = 0.0;      ///< L_y (mm)
+  double end_zone_flexibility = 0.0; ///< sum 2 L_i / (E A_i) over transition and connection (mm/N)
+  double youngs_modulus = 0.0;       ///< E (MPa)
 
   static AxialBraceIdealisation of(const model::BraceSpec& brace);
   /// Axial deformation at first yield for a yield stress fy (MPa): fy A_c (L_y / (E A_c) +
@@ -79,17 +79,16 @@ struct CalibrationResult {
   std::vector<double> model_force; ///< calibrated fast-model force at every history point
 };
 
-/// With options.max_evaluations == 0, evaluates `start` unchanged. Otherwise calibrates `start`'s fy, Chaboche and Voce terms (two back-stresses and one Voce term in
-/// the result, whatever `start` has) so that the fast model of `brace` driven through
-/// `deformation` matches `test_force` at the points where `compared` is true, by minimising
-/// the normalised RMS force error (record_comparison.hpp) with Nelder-Mead (nelder_mead).
-/// Deterministic: the start is `start`'s fy and fixed mid-range hardening values.
-CalibrationResult calibrate_steel(const material::SteelParameters& start,
-                                  const AxialBraceIdealisation& brace,
-                                  std::span<const double> deformation,
-                                  std::span<const double> test_force,
-                                  const std::vector<bool>& compared,
-                                  const CalibrationOptions& options);
+/// With options.max_evaluations == 0, evaluates `start` unchanged. Otherwise calibrates `start`'s
+/// fy, Chaboche and Voce terms (two back-stresses and one Voce term in the result, whatever `start`
+/// has) so that the fast model of `brace` driven through `deformation` matches `test_force` at the
+/// points where `compared` is true, by minimising the normalised RMS force error
+/// (record_comparison.hpp) with Nelder-Mead (nelder_mead). Deterministic: the start is `start`'s fy
+/// and fixed mid-range hardening values.
+CalibrationResult
+calibrate_steel(const material::SteelParameters& start, const AxialBraceIdealisation& brace,
+                std::span<const double> deformation, std::span<const double> test_force,
+                const std::vector<bool>& compared, const CalibrationOptions& options);
 
 /// Result of nelder_mead.
 struct SimplexMinimum {
