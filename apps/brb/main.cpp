@@ -1,5 +1,6 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
+#include "calibrate_command.hpp"
 #include "cyclic_command.hpp"
 #include "material_command.hpp"
 #include "validate_command.hpp"
@@ -30,6 +31,8 @@ int main(int argc, char** argv) {
   const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
   brb::cli::ValidateCommand validate_command;
   const CLI::App* validate = brb::cli::add_validate_command(app, validate_command);
+  brb::cli::CalibrateCommand calibrate_command;
+  const CLI::App* calibrate = brb::cli::add_calibrate_command(app, calibrate_command);
 
   try {
     app.parse(argc, argv);
@@ -37,9 +40,9 @@ int main(int argc, char** argv) {
     if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
       return app.exit(error); // --help
     }
-    std::cerr
-        << "brb: error: " << error.what() << "\n"
-        << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, validate) for usage.\n";
+    std::cerr << "brb: error: " << error.what() << "\n"
+              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, validate, "
+                 "calibrate) for usage.\n";
     return kInvalidInput;
   }
 
@@ -50,6 +53,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
     if (validate->parsed())
       return brb::cli::run_validate_command(validate_command, std::cout);
+    if (calibrate->parsed())
+      return brb::cli::run_calibrate_command(calibrate_command, std::cout);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

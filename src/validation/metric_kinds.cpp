@@ -1,5 +1,7 @@
 #include "brb/validation/metric_kinds.hpp"
 
+#include "brb/validation/record_comparison.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -356,8 +358,75 @@ MetricValue evaluate_residual_compression_ratio(const Json& metric, const RunDat
           lookup.span->label + ", at " + format_fixed(steps[shortest].deformation, 3) + " mm"};
 }
 
-const std::array<MetricKind, 8>& registry() {
-  static const std::array<MetricKind, 8> kinds{{
+void check_nothing(const io::JsonValue&) {}
+
+/// The model against the specimen's lab record at the points both have (model step k is
+/// protocol point k), with record_comparison.hpp's three metrics.
+struct RecordLookup {
+  std::optional<RecordComparison> comparison;
+  std::string note;
+};
+
+RecordLookup compare_run_with_record(const RunData& run) {
+  if (run.record == nullptr)
+    return {std::nullopt, "the specimen has no reference record"};
+  const RecordSeries& record = *run.record;
+  const std::vector<CyclicStep>& steps = run.result.steps;
+  if (steps.size() > record.deformation.size())
+    return {std::nullopt, "the model took more points than the protocol has"};
+  std::vector<double> deformation, test_force, model_force;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (std::isnan(record.test_force[k]))
+      continue;
+    deformation.push_back(record.deformation[k]);
+    test_force.push_back(record.test_force[k]);
+    model_force.push_back(steps[k].force);
+  }
+  if (deformation.empty())
+    return {std::nullopt, "no point of the record was reached"};
+  const std::string note = std::to_string(deformation.size()) + " record points" +
+                           (run.result.completed ? "" : " (the run stopped early)");
+  try {
+    return {compare_with_record(deformation, test_force, model_force,
+                                {record.reversal_threshold, record.energy_floor_fraction}),
+            note};
+  } catch (const std::invalid_argument& error) {
+    return {std::nullopt, error.what()};
+  }
+}
+
+MetricValue evaluate_record_nrms(const Json&, const RunData& run) {
+  const RecordLookup lookup = compare_run_with_record(run);
+  if (!lookup.comparison)
+    return {std::nullopt, lookup.note};
+  return {lookup.comparison->normalised_rms_error, lookup.note};
+}
+
+MetricValue evaluate_record_cycle_energy(const Json&, const RunData& run) {
+  const RecordLookup lookup = compare_run_with_record(run);
+  if (!lookup.comparison)
+    return {std::nullopt, lookup.note};
+  if (lookup.comparison->scored_cycles == 0)
+    return {std::nullopt, lookup.note + ": no cycle scored"};
+  return {lookup.comparison->max_cycle_energy_error,
+          lookup.note + ", " + std::to_string(lookup.comparison->scored_cycles) + " cycles"};
+}
+
+MetricValue evaluate_record_beta(const Json&, const RunData& run) {
+  const RecordLookup lookup = compare_run_with_record(run);
+  if (!lookup.comparison)
+    return {std::nullopt, lookup.note};
+  if (lookup.comparison->scored_cycles == 0)
+    return {std::nullopt, lookup.note + ": no cycle scored"};
+  const double difference = lookup.comparison->max_beta_difference;
+  if (!std::isfinite(difference))
+    return {std::nullopt, lookup.note + ": a scored cycle of the model has no tension"};
+  return {difference,
+          lookup.note + ", " + std::to_string(lookup.comparison->scored_cycles) + " cycles"};
+}
+
+const std::array<MetricKind, 11>& registry() {
+  static const std::array<MetricKind, 11> kinds{{
       {"cycle_energy",
        "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
        "(\"amplitude_dy\")",
@@ -410,6 +479,25 @@ const std::array<MetricKind, 8>& registry() {
        false,
        check_residual_compression_ratio,
        evaluate_residual_compression_ratio},
+      {"record_nrms",
+       "normalised RMS force error against the specimen's lab record (RMS of the difference "
+       "over the RMS of the test force, at the record's points)",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_nrms},
+      {"record_cycle_energy",
+       "largest relative loop-energy error per scored cycle against the lab record",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_cycle_energy},
+      {"record_beta",
+       "largest |beta model - beta test| per scored cycle against the lab record",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_beta},
   }};
   return kinds;
 }

@@ -25,8 +25,6 @@ constexpr std::size_t kMostRefinements = 8;
 constexpr int kLargestRefinement = 64;
 
 /// Record units accepted at the edge, with their factor to N or mm.
-constexpr double kNewtonPerKip = 4448.2216152605; // 1 kip = 1000 lbf, 1 lbf = 4.4482216152605 N
-constexpr double kMillimetrePerInch = 25.4;
 
 std::string string_of(const JsonValue& value, std::string_view meaning) {
   return value.string(meaning);
@@ -183,59 +181,34 @@ MetricSpec read_metric(const JsonValue& value, std::set<std::string>& names) {
   return metric;
 }
 
-double force_factor(const JsonValue& unit) {
-  const std::string name = string_of(unit, "force unit of the record");
-  if (name == "N")
-    return 1.0;
-  if (name == "kN")
-    return 1000.0;
-  if (name == "kip")
-    return kNewtonPerKip;
-  throw unit.error("force unit of the record must be \"N\", \"kN\" or \"kip\" (got \"" + name +
-                   "\")");
-}
-
-double length_factor(const JsonValue& unit) {
-  const std::string name = string_of(unit, "length unit of the record");
-  if (name == "mm")
-    return 1.0;
-  if (name == "in")
-    return kMillimetrePerInch;
-  throw unit.error("length unit of the record must be \"mm\" or \"in\" (got \"" + name + "\")");
-}
-
 RecordReference read_record(const JsonValue& value, const fs::path& directory,
                             const fs::path& shared_directory) {
-  value.expect_object({"file", "columns", "units"},
-                      "reference: the measured record {\"file\", \"columns\", \"units\"}");
   RecordReference record;
-  const JsonValue file = value.at("file", "the record's CSV file (\"shared:...\" or relative "
-                                          "to the specimen's folder)");
-  record.written = string_of(file, "file");
-  const std::string_view prefix = shared_prefix;
-  if (record.written.rfind(prefix, 0) == 0)
-    record.file = shared_directory / record.written.substr(prefix.size());
-  else
-    record.file = directory / record.written;
-  if (!fs::is_regular_file(record.file))
-    throw file.error("no such file: " + record.file.string());
-
-  const JsonValue columns = value.at("columns", "{\"force\": column, \"deformation\": column}");
-  columns.expect_object({"force", "deformation"}, "columns: {\"force\", \"deformation\"}");
-  record.force_column = string_of(columns.at("force", "the force column's name"), "force column");
-  record.deformation_column =
-      string_of(columns.at("deformation", "the deformation column's name"), "deformation column");
-
-  const JsonValue units = value.at("units", "{\"force\": \"N\"|\"kN\"|\"kip\", \"length\": "
-                                            "\"mm\"|\"in\"}");
-  units.expect_object({"force", "length"}, "units: {\"force\", \"length\"}");
-  const JsonValue force_unit = units.at("force", "force unit: \"N\", \"kN\" or \"kip\"");
-  const JsonValue length_unit = units.at("length", "length unit: \"mm\" or \"in\"");
-  record.force_to_newton = force_factor(force_unit);
-  record.length_to_millimetre = length_factor(length_unit);
-  record.force_unit = force_unit.json().get<std::string>();
-  record.length_unit = length_unit.json().get<std::string>();
+  // (the reference object's schema is io/force_record.hpp's: file, columns, units,
+  // exclude_rows; "shared:" resolves against the shared directory)
+  record.source = io::read_force_record_reference(value, directory, shared_directory);
+  record.written = string_of(value.at("file", "the record's CSV file"), "file");
+  if (!fs::is_regular_file(record.source.file))
+    throw value.at("file", "").error("no such file: " + record.source.file.string());
   return record;
+}
+
+void read_comparison(const JsonValue& value, RecordReference& record) {
+  value.expect_object({"record_row_column", "reversal_threshold_dy", "energy_floor_fraction"},
+                      "comparison: {\"record_row_column\", \"reversal_threshold_dy\", "
+                      "\"energy_floor_fraction\"}");
+  if (const auto column = value.find("record_row_column"))
+    record.record_row_column = string_of(*column, "record_row_column");
+  if (const auto threshold = value.find("reversal_threshold_dy")) {
+    record.reversal_threshold_dy = threshold->number("reversal threshold in dy");
+    if (!(record.reversal_threshold_dy >= 0.0))
+      throw threshold->error("the reversal threshold must be >= 0 dy");
+  }
+  if (const auto floor = value.find("energy_floor_fraction")) {
+    record.energy_floor_fraction = floor->number("energy floor, a fraction");
+    if (!(record.energy_floor_fraction >= 0.0 && record.energy_floor_fraction < 1.0))
+      throw floor->error("the energy floor must be a fraction in [0, 1)");
+  }
 }
 
 } // namespace
@@ -247,7 +220,7 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
   const nlohmann::json document = io::read_json_file(specimen.metrics_file);
   const JsonValue root(document, specimen.metrics_file.string());
   root.expect_object({"id", "title", "source", "brace", "protocol", "refinements", "reference",
-                      "notes", "metrics"},
+                      "comparison", "role", "calibrated_on", "notes", "metrics"},
                      "a specimen's metrics file (an object)");
 
   const JsonValue id = root.at("id", "the specimen's id, the name of its folder");
@@ -275,6 +248,18 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
   specimen.refinements = read_refinements(root.at("refinements", "e.g. [1, 2, 4]"));
   if (const auto record = root.find("reference"))
     specimen.record = read_record(*record, directory, shared_directory);
+  if (const auto comparison = root.find("comparison")) {
+    if (!specimen.record)
+      throw comparison->error("a comparison needs a reference record");
+    read_comparison(*comparison, *specimen.record);
+  }
+  if (const auto role = root.find("role")) {
+    specimen.role = string_of(*role, "role");
+    if (specimen.role != "calibration" && specimen.role != "prediction")
+      throw role->error("role must be \"calibration\" or \"prediction\"");
+  }
+  if (const auto calibrated_on = root.find("calibrated_on"))
+    specimen.calibrated_on = string_of(*calibrated_on, "calibrated_on");
   if (const auto notes = root.find("notes")) {
     const std::size_t count = notes->expect_array(1000, "notes: a list of strings");
     for (std::size_t i = 0; i < count; ++i)

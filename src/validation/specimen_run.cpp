@@ -1,5 +1,8 @@
 #include "brb/validation/specimen_run.hpp"
 
+#include "brb/io/csv.hpp"
+#include "brb/io/force_record.hpp"
+
 #include "brb/io/atomic_file.hpp"
 #include "brb/io/brace_input.hpp"
 #include "brb/io/cyclic_output.hpp"
@@ -9,6 +12,7 @@
 #include "brb/material/parameter_error.hpp"
 #include "brb/model/brace_model.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -136,6 +140,48 @@ model::BraceSpec refined(const model::BraceSpec& spec, int refinement) {
   return finer;
 }
 
+/// The record's force at each protocol point: the protocol CSV's record_row column names the
+/// record's data row of each point (-1: none). The protocol as read must have exactly the
+/// CSV's points (its steps already under max_step), so that model step k is point k.
+RecordSeries record_series(const RecordReference& reference, const fs::path& protocol_file,
+                           const io::LoadingProtocol& protocol, double yield_deformation) {
+  if (protocol_file.extension() != ".csv") {
+    throw io::InputError(protocol_file.string(), "",
+                         "a specimen with a reference record needs a .csv protocol with a '" +
+                             reference.record_row_column + "' column");
+  }
+  const io::ForceRecord record =
+      io::read_force_record(reference.source.file, reference.source.format);
+  const io::NumericColumn rows =
+      io::read_numeric_column(protocol_file, reference.record_row_column);
+  if (rows.values.size() != protocol.deformation.size()) {
+    throw io::InputError(protocol_file.string(), reference.record_row_column,
+                         "the protocol's points are " + std::to_string(rows.values.size()) +
+                             " but the analysis would take " +
+                             std::to_string(protocol.deformation.size()) +
+                             " (steps longer than dy / 10 are cut): make the steps shorter");
+  }
+  RecordSeries series;
+  series.deformation = protocol.deformation;
+  series.test_force.assign(protocol.deformation.size(), std::nan(""));
+  series.reversal_threshold = reference.reversal_threshold_dy * yield_deformation;
+  series.energy_floor_fraction = reference.energy_floor_fraction;
+  for (std::size_t k = 0; k < rows.values.size(); ++k) {
+    if (rows.values[k] < 0.0)
+      continue;
+    const auto row = static_cast<std::size_t>(rows.values[k]);
+    const auto found = std::lower_bound(record.row.begin(), record.row.end(), row);
+    if (found == record.row.end() || *found != row) {
+      throw io::InputError(protocol_file.string(), "line " + std::to_string(rows.lines[k]),
+                           reference.record_row_column + " " + std::to_string(row) +
+                               " is not a kept row of the record " +
+                               reference.source.file.string());
+    }
+    series.test_force[k] = record.force[static_cast<std::size_t>(found - record.row.begin())];
+  }
+  return series;
+}
+
 PreparedSpecimen prepare_specimen(Specimen specimen) {
   PreparedSpecimen prepared;
   prepared.brace = io::read_brace(specimen.brace_file);
@@ -144,8 +190,12 @@ PreparedSpecimen prepare_specimen(Specimen specimen) {
   const model::BraceModel model = build_checked(prepared.brace, specimen.brace_file);
   prepared.yield_deformation = model.yield_deformation;
   prepared.yield_force = model.yield_force;
-  prepared.protocol_points =
-      read_protocol_for(specimen.protocol_file, model.yield_deformation).deformation.size();
+  const io::LoadingProtocol protocol =
+      read_protocol_for(specimen.protocol_file, model.yield_deformation);
+  prepared.protocol_points = protocol.deformation.size();
+  if (specimen.record)
+    prepared.record =
+        record_series(*specimen.record, specimen.protocol_file, protocol, model.yield_deformation);
   prepared.specimen = std::move(specimen);
   return prepared;
 }
@@ -193,7 +243,8 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   outcome.energy_balance_error = result.energy_balance.relative_error();
   outcome.yield_deformation = brace.yield_deformation;
   outcome.yield_force = brace.yield_force;
-  const RunData run{result, brace.yield_deformation, brace.yield_force, spec.yielding_length};
+  const RunData run{result, brace.yield_deformation, brace.yield_force, spec.yielding_length,
+                    prepared.record ? &*prepared.record : nullptr};
   outcome.checks = evaluate_checks(prepared.specimen, run);
   return outcome;
 }

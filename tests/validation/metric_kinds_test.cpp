@@ -6,6 +6,8 @@
 #include "brb/validation/specimen_run.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <utility>
@@ -101,6 +103,39 @@ TEST(ResidualCompressionRatio, ForceAtTheLargestShorteningOverThePeak) {
   const MetricValue ratio = evaluate({{"kind", "residual_compression_ratio"}}, result);
   ASSERT_TRUE(ratio.value);
   EXPECT_NEAR(*ratio.value, 0.05, 1e-12);
+}
+
+TEST(RecordKinds, CompareTheModelWithItsLabRecordAtTheRecordsPoints) {
+  // Reference (definition, record_comparison.hpp): a model force 10 % above the test force
+  // everywhere has a normalised RMS error of 0.1, loop energies 10 % high and the same beta.
+  // Points marked NaN in the record are not compared (here a model spike of 1e9 N).
+  const CyclicTestResult loops = three_rectangles();
+  brb::validation::RecordSeries record;
+  CyclicTestResult model = loops;
+  for (std::size_t k = 0; k < loops.steps.size(); ++k) {
+    record.deformation.push_back(loops.steps[k].deformation);
+    record.test_force.push_back(loops.steps[k].force);
+    model.steps[k].force = 1.1 * loops.steps[k].force;
+  }
+  record.test_force[3] = std::nan("");
+  model.steps[3].force = 1e9;
+  record.reversal_threshold = 0.1;
+  const RunData run{model, kYieldDeform, kForce, 100.0, &record};
+  const auto value = [&](const char* kind) {
+    return find_metric_kind(kind)->evaluate(json{{"kind", kind}}, run);
+  };
+  const MetricValue nrms = value("record_nrms");
+  ASSERT_TRUE(nrms.value) << nrms.note;
+  EXPECT_NEAR(*nrms.value, 0.1, 1e-12);
+  const MetricValue energy = value("record_cycle_energy");
+  ASSERT_TRUE(energy.value) << energy.note;
+  EXPECT_NEAR(*energy.value, 0.1, 1e-12);
+  const MetricValue beta = value("record_beta");
+  ASSERT_TRUE(beta.value) << beta.note;
+  EXPECT_NEAR(*beta.value, 0.0, 1e-12);
+  // Without a record the kinds have no value and say why.
+  const RunData bare{model, kYieldDeform, kForce, 100.0};
+  EXPECT_FALSE(find_metric_kind("record_nrms")->evaluate(json::object(), bare).value);
 }
 
 TEST(CycleEnergy, RectangleLoopAreaIsWidthTimesHeight) {

@@ -84,12 +84,16 @@ TEST(Specimen, ResolvesASharedRecordAndConvertsItsUnits) {
   const Specimen specimen =
       read_specimen(write_specimen(scratch, metrics), scratch.path() / "shared");
   ASSERT_TRUE(specimen.record);
-  EXPECT_EQ(specimen.record->file, scratch.path() / "shared" / "data" / "record.csv");
-  EXPECT_EQ(specimen.record->force_column, "Force[kip]");
+  EXPECT_EQ(specimen.record->source.file, scratch.path() / "shared" / "data" / "record.csv");
+  EXPECT_EQ(specimen.record->source.format.force_column, "Force[kip]");
+  EXPECT_EQ(specimen.record->source.format.force_unit, "kip");
+  EXPECT_EQ(specimen.record->source.format.length_unit, "in");
+  EXPECT_EQ(specimen.record->written, "shared:data/record.csv");
   // 1 kip = 1000 lbf = 4448.2216152605 N (exact by the definition of the pound-force);
-  // 1 in = 25.4 mm exactly.
-  EXPECT_DOUBLE_EQ(specimen.record->force_to_newton, 4448.2216152605);
-  EXPECT_DOUBLE_EQ(specimen.record->length_to_millimetre, 25.4);
+  // 1 in = 25.4 mm exactly (the reader converts at the edge).
+  const brb::io::ForceRecord record =
+      brb::io::read_force_record(specimen.record->source.file, specimen.record->source.format);
+  ASSERT_EQ(record.size(), 1u);
 }
 
 struct InvalidMetricsCase {

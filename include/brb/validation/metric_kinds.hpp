@@ -20,11 +20,22 @@ namespace brb::validation {
 /// What a metric is evaluated on: one cyclic test of one specimen at one refinement. The
 /// kinds read the hysteresis (result.steps) and the indicators only, so that they apply to
 /// any force-deformation record.
+/// A lab record matched to the protocol's points (specimens with a reference record): the
+/// test force at protocol point k (NaN where the point is not a record point), and the
+/// comparison's settings.
+struct RecordSeries {
+  std::vector<double> deformation; ///< mm, the protocol's points
+  std::vector<double> test_force;  ///< N, per point; NaN: not compared
+  double reversal_threshold = 0.0; ///< mm
+  double energy_floor_fraction = 0.05;
+};
+
 struct RunData {
   const analysis::CyclicTestResult& result;
-  double yield_deformation = 0.0; ///< dy of the brace model, mm
-  double yield_force = 0.0;       ///< Py = fy A_core, N
-  double yielding_length = 0.0;   ///< mm, of the core
+  double yield_deformation = 0.0;       ///< dy of the brace model, mm
+  double yield_force = 0.0;             ///< Py = fy A_core, N
+  double yielding_length = 0.0;         ///< mm, of the core
+  const RecordSeries* record = nullptr; ///< for the record_* kinds
 };
 
 /// A metric's value, or why there is none (e.g. the cycle asked for was not reached).

@@ -5,6 +5,8 @@
 // JSON path and what was expected.
 #pragma once
 
+#include "brb/io/force_record.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -40,17 +42,17 @@ struct MetricSpec {
   std::string source;           ///< where the reference or bound comes from
 };
 
-/// A measured force-deformation record (a lab test) for record-based metrics: the CSV file,
-/// its two columns and their units, converted to N and mm at the edge.
+/// A measured force-deformation record (a lab test) for the record-based metrics: the CSV
+/// file, its columns, units and excluded rows (io/force_record.hpp reads and converts it to N
+/// and mm at the edge), and how the model's points are matched to it.
 struct RecordReference {
-  std::filesystem::path file; ///< resolved path (`shared:` prefix resolved)
-  std::string written;        ///< the path as written in metrics.json
-  std::string force_column;
-  std::string deformation_column;
-  std::string force_unit;       ///< "N", "kN" or "kip"
-  std::string length_unit;      ///< "mm" or "in"
-  double force_to_newton = 1.0; ///< multiply a value of the record's force column by this
-  double length_to_millimetre = 1.0;
+  io::ForceRecordReference source; ///< resolved file and format
+  std::string written;             ///< the path as written in metrics.json
+  /// The protocol CSV's column holding, per point, the record's 0-based data row (-1: not a
+  /// record point; not compared). Model step k is protocol point k.
+  std::string record_row_column = "record_row";
+  double reversal_threshold_dy = 0.1;  ///< cycle segmentation threshold, in dy
+  double energy_floor_fraction = 0.05; ///< cycles below this share of the largest: not scored
 };
 
 struct Specimen {
@@ -63,6 +65,10 @@ struct Specimen {
   std::filesystem::path protocol_file; ///< resolved against the folder
   std::vector<int> refinements;        ///< multipliers of every zone's element count
   std::optional<RecordReference> record;
+  /// For lab records: "calibration" (the specimen calibrated its grade's steel) or
+  /// "prediction" (run with the steel calibrated on `calibrated_on`); empty otherwise.
+  std::string role;
+  std::string calibrated_on;
   std::vector<std::string> notes;
   std::vector<MetricSpec> metrics;
 };

@@ -65,6 +65,8 @@ struct PreparedSpecimen {
   double yield_deformation = 0.0; ///< mm
   double yield_force = 0.0;       ///< N
   std::size_t protocol_points = 0;
+  /// The lab record at the protocol's points (specimens with a reference record).
+  std::optional<RecordSeries> record;
 };
 
 /// Reads and checks the brace and protocol files of `specimen` (io::InputError naming the

@@ -1,0 +1,87 @@
+// Comparison of a model's force history with a laboratory record's at the same deformation
+// points (issue 4 acceptance): normalised RMS force error, loop energy per cycle and its
+// relative error, and beta = |Pmax compression| / Tmax per cycle. Pure functions of the
+// three series; units N and mm (energies N mm).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace brb::validation {
+
+/// Normalised RMS force error: sqrt(sum (F_model - F_test)^2) / sqrt(sum F_test^2), the RMS of
+/// the difference over the RMS of the test force (a relative L2 error). The RMS of the test
+/// force rather than its peak: a peak is set by one point (a spike of the record would set
+/// the scale), and a record with many small cycles and one large one would have its
+/// small-cycle errors divided by the large cycle's force. The points are the protocol's,
+/// about evenly spaced along the deformation path, so the sums weight the history by its
+/// deformation travel, not by the laboratory's sampling rate. Throws std::invalid_argument
+/// for series of different or zero length, or a test force that is zero everywhere.
+double normalised_rms_force_error(std::span<const double> model_force,
+                                  std::span<const double> test_force);
+
+/// A cycle: points [first, last] (inclusive) of the deformation history.
+struct CycleSpan {
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+
+/// Full cycles of a deformation history, segmented by its reversals (find_reversals with
+/// `reversal_threshold`, mm): the history's leading reversal kind is that of its first
+/// reversal (a maximum for a tension-first history); each cycle runs from one reversal of
+/// that kind to the next, so it holds one excursion each way (one tension + one compression
+/// excursion) and closes a loop. The part before the first reversal (the virgin loading) and
+/// after the last reversal of the leading kind (an unfinished cycle) belong to no cycle.
+std::vector<CycleSpan> segment_cycles(std::span<const double> deformation,
+                                      double reversal_threshold);
+
+/// Loop energy of `cycle`: trapezoidal integral of F d(delta) over its increments (N mm).
+double loop_energy(std::span<const double> deformation, std::span<const double> force,
+                   CycleSpan cycle);
+
+/// beta of `cycle` = |min F| / max F over its points (compression over tension peak);
+/// NaN when the cycle has no positive force.
+double compression_tension_ratio(std::span<const double> force, CycleSpan cycle);
+
+struct RecordComparisonOptions {
+  /// mm (>= 0): reversal noise threshold for segment_cycles; the specimens use 0.1 dy.
+  double reversal_threshold = 0.0;
+  /// Cycles whose test loop energy is below this fraction of the largest test loop energy
+  /// are not scored (energy error and beta): nearly elastic cycles, whose loop area is a
+  /// small difference of large numbers and is dominated by measurement noise, and whose
+  /// beta compares two elastic forces.
+  double energy_floor_fraction = 0.05;
+};
+
+struct CycleComparison {
+  CycleSpan span;
+  double test_energy = 0.0;  ///< N mm
+  double model_energy = 0.0; ///< N mm
+  double test_beta = 0.0;
+  double model_beta = 0.0;
+  bool scored = false; ///< test energy at or above the floor
+  /// |model - test| / test energy (scored cycles only; 0 otherwise).
+  double energy_error() const;
+  double beta_difference() const;
+};
+
+struct RecordComparison {
+  double normalised_rms_error = 0.0;
+  std::vector<CycleComparison> cycles;
+  std::size_t scored_cycles = 0;
+  /// Largest relative loop-energy error over the scored cycles (0 without one).
+  double max_cycle_energy_error = 0.0;
+  /// Largest |beta_model - beta_test| over the scored cycles (0 without one).
+  double max_beta_difference = 0.0;
+};
+
+/// The three metrics of issue 4 for a model and a test force at the same deformation points
+/// (N, mm). Throws std::invalid_argument when the three series differ in length or are empty,
+/// or the test force is zero everywhere.
+RecordComparison compare_with_record(std::span<const double> deformation,
+                                     std::span<const double> test_force,
+                                     std::span<const double> model_force,
+                                     const RecordComparisonOptions& options);
+
+} // namespace brb::validation

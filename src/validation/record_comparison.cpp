@@ -1,0 +1,106 @@
+#include "brb/validation/record_comparison.hpp"
+
+#include "brb/validation/reversals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace brb::validation {
+
+double normalised_rms_force_error(std::span<const double> model_force,
+                                  std::span<const double> test_force) {
+  if (model_force.size() != test_force.size() || test_force.empty()) {
+    throw std::invalid_argument("normalised_rms_force_error: the model and test series must "
+                                "have the same, non-zero length");
+  }
+  double difference = 0.0;
+  double reference = 0.0;
+  for (std::size_t i = 0; i < test_force.size(); ++i) {
+    const double delta = model_force[i] - test_force[i];
+    difference += delta * delta;
+    reference += test_force[i] * test_force[i];
+  }
+  if (!(reference > 0.0))
+    throw std::invalid_argument("normalised_rms_force_error: the test force is zero everywhere");
+  return std::sqrt(difference / reference);
+}
+
+std::vector<CycleSpan> segment_cycles(std::span<const double> deformation,
+                                      double reversal_threshold) {
+  const std::vector<std::size_t> reversals = find_reversals(deformation, reversal_threshold);
+  std::vector<CycleSpan> cycles;
+  // Reversals alternate maxima and minima, so those of the leading kind are every other one.
+  for (std::size_t k = 0; k + 2 < reversals.size(); k += 2)
+    cycles.push_back({reversals[k], reversals[k + 2]});
+  return cycles;
+}
+
+double loop_energy(std::span<const double> deformation, std::span<const double> force,
+                   CycleSpan cycle) {
+  double energy = 0.0;
+  for (std::size_t i = cycle.first; i < cycle.last; ++i)
+    energy += 0.5 * (force[i] + force[i + 1]) * (deformation[i + 1] - deformation[i]);
+  return energy;
+}
+
+double compression_tension_ratio(std::span<const double> force, CycleSpan cycle) {
+  double tension = 0.0;
+  double compression = 0.0;
+  for (std::size_t i = cycle.first; i <= cycle.last; ++i) {
+    tension = std::max(tension, force[i]);
+    compression = std::min(compression, force[i]);
+  }
+  if (!(tension > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  return -compression / tension;
+}
+
+double CycleComparison::energy_error() const {
+  return scored ? std::abs(model_energy - test_energy) / test_energy : 0.0;
+}
+
+double CycleComparison::beta_difference() const {
+  return scored ? std::abs(model_beta - test_beta) : 0.0;
+}
+
+RecordComparison compare_with_record(std::span<const double> deformation,
+                                     std::span<const double> test_force,
+                                     std::span<const double> model_force,
+                                     const RecordComparisonOptions& options) {
+  if (deformation.size() != test_force.size() || deformation.size() != model_force.size() ||
+      deformation.empty()) {
+    throw std::invalid_argument("compare_with_record: deformation, test and model force must "
+                                "have the same, non-zero length");
+  }
+  RecordComparison result;
+  result.normalised_rms_error = normalised_rms_force_error(model_force, test_force);
+
+  double largest_test_energy = 0.0;
+  for (const CycleSpan& span : segment_cycles(deformation, options.reversal_threshold)) {
+    CycleComparison cycle;
+    cycle.span = span;
+    cycle.test_energy = loop_energy(deformation, test_force, span);
+    cycle.model_energy = loop_energy(deformation, model_force, span);
+    cycle.test_beta = compression_tension_ratio(test_force, span);
+    cycle.model_beta = compression_tension_ratio(model_force, span);
+    largest_test_energy = std::max(largest_test_energy, cycle.test_energy);
+    result.cycles.push_back(cycle);
+  }
+  const double floor = options.energy_floor_fraction * largest_test_energy;
+  for (CycleComparison& cycle : result.cycles) {
+    cycle.scored = cycle.test_energy > 0.0 && cycle.test_energy >= floor;
+    if (!cycle.scored)
+      continue;
+    ++result.scored_cycles;
+    result.max_cycle_energy_error = std::max(result.max_cycle_energy_error, cycle.energy_error());
+    // A model without positive force in the cycle has a NaN beta: the worst difference.
+    const double beta = cycle.beta_difference();
+    result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
+                                                  : std::max(result.max_beta_difference, beta);
+  }
+  return result;
+}
+
+} // namespace brb::validation

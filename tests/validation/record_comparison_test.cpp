@@ -1,0 +1,126 @@
+// Record comparison metrics against hand-computed references: elastic-perfectly-plastic
+// parallelogram loops (area 4 Fy (A - Fy / K)), scaled forces (known relative errors) and
+// asymmetric loops (known beta).
+#include "brb/validation/record_comparison.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace brb::validation {
+namespace {
+
+/// Deformation and force of an elastic-perfectly-plastic spring (stiffness K, strength Fy,
+/// compression strength Fc) taken 0 -> +A -> (-A -> +A) x loops -> 0, with a point at every
+/// corner of the loops so that the trapezoidal rule is exact (the force is piecewise linear
+/// in the deformation).
+struct Loops {
+  std::vector<double> deformation;
+  std::vector<double> force;
+  void add(double d, double f) {
+    deformation.push_back(d);
+    force.push_back(f);
+  }
+};
+
+Loops parallelogram_loops(double stiffness, double fy, double fc, double amplitude, int loops) {
+  Loops path;
+  path.add(0.0, 0.0);
+  path.add(fy / stiffness, fy); // yield
+  path.add(amplitude, fy);      // first maximum
+  for (int loop = 0; loop < loops; ++loop) {
+    path.add(amplitude - (fy + fc) / stiffness, -fc); // unloaded and yielded in compression
+    path.add(-amplitude, -fc);                        // minimum
+    path.add(-amplitude + (fy + fc) / stiffness, fy); // reloaded to tension yield
+    path.add(amplitude, fy);                          // maximum
+  }
+  path.add(amplitude - fy / stiffness, 0.0); // unloaded to zero force
+  return path;
+}
+
+TEST(RecordComparison, NormalisedRmsErrorOfAScaledForceIsTheScale) {
+  const std::vector<double> test{1.0, -2.0, 3.0, -4.0};
+  std::vector<double> model;
+  for (const double f : test)
+    model.push_back(1.1 * f);
+  EXPECT_NEAR(normalised_rms_force_error(model, test), 0.1, 1e-12);
+  // Hand computed: differences (1, 0), test (3, 4): sqrt(1 / 25) = 0.2.
+  EXPECT_NEAR(
+      normalised_rms_force_error(std::vector<double>{4.0, 4.0}, std::vector<double>{3.0, 4.0}), 0.2,
+      1e-12);
+  EXPECT_THROW(normalised_rms_force_error(std::vector<double>{1.0}, std::vector<double>{0.0}),
+               std::invalid_argument);
+}
+
+TEST(RecordComparison, CyclesRunFromMaximumToMaximumAndEncloseTheParallelogramArea) {
+  const double stiffness = 100.0, fy = 10.0, amplitude = 1.0;
+  const Loops path = parallelogram_loops(stiffness, fy, fy, amplitude, 3);
+  const std::vector<CycleSpan> cycles = segment_cycles(path.deformation, 0.05);
+  // Maxima at points 2, 6, 10, 14: three closed cycles.
+  ASSERT_EQ(cycles.size(), 3u);
+  EXPECT_EQ(cycles[0].first, 2u);
+  EXPECT_EQ(cycles[0].last, 6u);
+  EXPECT_EQ(cycles[2].last, 14u);
+  const double area = 4.0 * fy * (amplitude - fy / stiffness); // 36 N mm
+  for (const CycleSpan& cycle : cycles) {
+    EXPECT_NEAR(loop_energy(path.deformation, path.force, cycle), area, 1e-12);
+    EXPECT_NEAR(compression_tension_ratio(path.force, cycle), 1.0, 1e-15);
+  }
+}
+
+TEST(RecordComparison, EnergyErrorAndBetaOfKnownLoops) {
+  const double stiffness = 100.0, fy = 10.0, amplitude = 1.0;
+  // Test: compression strength 1.2 Fy (beta 1.2).
+  const Loops test = parallelogram_loops(stiffness, fy, 1.2 * fy, amplitude, 2);
+  // The model force, at the same deformation points, is the test force scaled by 0.9.
+  std::vector<double> scaled_force;
+  for (const double f : test.force)
+    scaled_force.push_back(0.9 * f);
+  const RecordComparison comparison =
+      compare_with_record(test.deformation, test.force, scaled_force, {0.05, 0.05});
+  ASSERT_EQ(comparison.cycles.size(), 2u);
+  EXPECT_EQ(comparison.scored_cycles, 2u);
+  // Area of the asymmetric parallelogram: (Fy + Fc) (2 A - (Fy + Fc) / K).
+  const double area = (fy + 1.2 * fy) * (2 * amplitude - (2.2 * fy) / stiffness);
+  EXPECT_NEAR(comparison.cycles[0].test_energy, area, 1e-12);
+  EXPECT_NEAR(comparison.cycles[0].model_energy, 0.9 * area, 1e-12);
+  EXPECT_NEAR(comparison.max_cycle_energy_error, 0.1, 1e-12);
+  EXPECT_NEAR(comparison.cycles[1].test_beta, 1.2, 1e-12);
+  EXPECT_NEAR(comparison.max_beta_difference, 0.0, 1e-12); // scaling keeps beta
+  EXPECT_NEAR(comparison.normalised_rms_error, 0.1, 1e-12);
+
+  // A symmetric model loop with the same corners in deformation: beta 1 against 1.2.
+  std::vector<double> symmetric_force = test.force;
+  for (double& f : symmetric_force)
+    f = f < 0.0 ? f / 1.2 : f;
+  const RecordComparison symmetric =
+      compare_with_record(test.deformation, test.force, symmetric_force, {0.05, 0.05});
+  EXPECT_NEAR(symmetric.max_beta_difference, 0.2, 1e-12);
+}
+
+TEST(RecordComparison, NearlyElasticCyclesBelowTheEnergyFloorAreNotScored) {
+  const double stiffness = 100.0, fy = 10.0;
+  // One plastic cycle of amplitude 1, then an elastic cycle of amplitude 0.05 (zero area)
+  // about the residual state, then back to the plastic maximum.
+  Loops path = parallelogram_loops(stiffness, fy, fy, 1.0, 1);
+  path.deformation.resize(7);
+  path.force.resize(7);                         // ends at the second maximum (1, Fy)
+  const double residual = 1.0 - fy / stiffness; // zero force
+  path.add(residual, 0.0);
+  path.add(residual - 0.05, -5.0);
+  path.add(residual, 0.0);
+  path.add(1.0, fy);
+  path.add(residual, 0.0);
+  const RecordComparison comparison =
+      compare_with_record(path.deformation, path.force, path.force, {0.01, 0.05});
+  ASSERT_EQ(comparison.cycles.size(), 2u);
+  EXPECT_TRUE(comparison.cycles[0].scored);
+  EXPECT_FALSE(comparison.cycles[1].scored); // area 0 against 36
+  EXPECT_NEAR(comparison.cycles[1].test_energy, 0.0, 1e-12);
+  EXPECT_EQ(comparison.scored_cycles, 1u);
+  EXPECT_EQ(comparison.max_cycle_energy_error, 0.0);
+}
+
+} // namespace
+} // namespace brb::validation
