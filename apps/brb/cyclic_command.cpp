@@ -244,7 +244,7 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           },
           "Energy-error control: a step is cut while the running sum of |trapezoidal work - "
           "change of stored and dissipated energy| would exceed this fraction of the gross "
-          "work; default 0 (off)")
+          "work; default 1e-2 (a guard against steps that jump to a far branch), 0: off")
       ->type_name("FRACTION");
   cyclic->add_flag("--histories", command.histories,
                    "Also write element_history.csv: core strain, dissipated energy, cumulative "

@@ -1,6 +1,8 @@
 // `brb cyclic`: a virtual cyclic test of a brace under a loading protocol (README: "brb cyclic").
 #pragma once
 
+#include "brb/analysis/static_analysis.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -15,9 +17,10 @@ struct CyclicCommand {
   std::filesystem::path output_directory; ///< receives hysteresis.csv and summary.json
   /// mm: the largest deformation change per step when the protocol gives none (default dy / 10).
   std::optional<double> max_step;
-  /// Energy-error control of the solver (NewtonSettings::energy_tolerance); 0 (default) turns
-  /// it off: it costs many substeps on restrained cores (README, "Energy balance").
-  double energy_tolerance = 0.0;
+  /// Energy-error control of the solver (NewtonSettings::energy_tolerance; default its guard
+  /// value 1e-2); 0 turns it off. Tight values cost many substeps on restrained cores
+  /// (README, "Energy balance").
+  double energy_tolerance = analysis::NewtonSettings::kEnergyGuard;
   /// Also write DIR/element_history.csv: the element outputs after every step.
   bool histories = false;
 };
