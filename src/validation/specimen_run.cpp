@@ -125,7 +125,7 @@ std::vector<CheckResult> automatic_checks(const analysis::CyclicTestResult& resu
   balance.at_most = energy_balance_tolerance;
   balance.status = std::isfinite(error) && error <= energy_balance_tolerance ? CheckStatus::pass
                                                                              : CheckStatus::fail;
-  balance.note = "abs(external - stored - dissipated - released) / external";
+  balance.note = "abs(external - stored - dissipated - released) / gross work";
   balance.source = "automatic: the issue's target 1e-6";
   return {completion, balance};
 }
