@@ -139,7 +139,6 @@ void StaticAnalysis::restore_path_state(const AnalysisPathState& state) {
   energy_ = state.energy;
   energy_error_sum_ = state.energy_error_sum;
   released_at_commit_ = energy_.released_in_jumps;
-  jump_work_.reset();
 }
 
 void StaticAnalysis::use_load_control(const Eigen::VectorXd& reference_load) {
@@ -415,27 +414,22 @@ double StaticAnalysis::increment_work() const {
   return work;
 }
 
-bool StaticAnalysis::within_energy_tolerance() const {
+bool StaticAnalysis::within_energy_tolerance(const StepEnergy& step) const {
   if (!(settings_.energy_tolerance > 0.0))
     return true;
-  const double work = increment_work();
-  const element::ElementEnergy energy = element_energy();
-  const double change = energy.stored + energy.dissipated - energy_.stored - energy_.dissipated;
-  const double step_error = work - change;
+  const double change = step.end.stored + step.end.dissipated - energy_.stored - energy_.dissipated;
+  const double step_error = step.work - change;
   // Round-off floor: the energies are sums of many terms of their own size.
   const double round_off =
-      1e-13 * (std::abs(energy.stored) + std::abs(energy.dissipated) + std::abs(work));
+      1e-13 * (std::abs(step.end.stored) + std::abs(step.end.dissipated) + std::abs(step.work));
   return std::abs(energy_error_sum_ + step_error) <=
-         settings_.energy_tolerance * (energy_.gross_work + std::abs(work)) + round_off;
+         settings_.energy_tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
 }
 
-void StaticAnalysis::commit(double control) {
-  // A step that passed a limit point brings its own work (see pseudo_transient).
-  const double work = jump_work_ ? *jump_work_ : increment_work();
+void StaticAnalysis::commit(double control, const StepEnergy& step) {
   const double energy_before = energy_.stored + energy_.dissipated + released_at_commit_;
-  energy_.external_work += work;
-  energy_.gross_work += std::abs(work);
-  jump_work_.reset();
+  energy_.external_work += step.work;
+  energy_.gross_work += std::abs(step.work);
   for (const auto& element : model_.elements())
     element->commit();
   committed_ = trial_;
@@ -446,12 +440,11 @@ void StaticAnalysis::commit(double control) {
   } else {
     control_force_ = reference_load_.dot(internal_force_);
   }
-  const element::ElementEnergy energy = element_energy();
-  energy_.stored = energy.stored;
-  energy_.dissipated = energy.dissipated;
+  energy_.stored = step.end.stored;
+  energy_.dissipated = step.end.dissipated;
   released_at_commit_ = energy_.released_in_jumps;
   energy_error_sum_ +=
-      work - (energy_.stored + energy_.dissipated + energy_.released_in_jumps - energy_before);
+      step.work - (energy_.stored + energy_.dissipated + energy_.released_in_jumps - energy_before);
 }
 
 void StaticAnalysis::revert() {
@@ -500,7 +493,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       attempt.failure = "converged to an unstable equilibrium";
     }
   }
-  if (attempt.converged && !within_energy_tolerance()) {
+  const StepEnergy step = attempt.converged ? trial_step_energy() : StepEnergy{};
+  if (attempt.converged && !within_energy_tolerance(step)) {
     if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
       // A kink inside the step (yield, contact): halve it until the trapezoidal work and
       // the energies agree (NewtonSettings::energy_tolerance).
@@ -522,7 +516,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       }
       committed_stable_ = stable;
     }
-    commit(to);
+    commit(to, step);
     ++report.substeps;
     return true;
   }
@@ -564,7 +558,8 @@ bool StaticAnalysis::pass_limit_point(double to, StepReport& report) {
   report.used_regularised_newton = true;
   ++regularised_steps_;
   committed_stable_ = !settings_.require_stable_equilibrium || tangent_is_positive_definite();
-  commit(to);
+  // A step that passed a limit point brings its own work (see pseudo_transient).
+  commit(to, {attempt.jump_work, element_energy()});
   ++report.substeps;
   return true;
 }
@@ -627,7 +622,7 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
       const double control_work =
           0.5 * (committed_internal_force_.dot(control_rate_) + control_force_before) *
           (control - control_value_);
-      jump_work_ = control_work + load_work;
+      total.jump_work = control_work + load_work;
       return total;
     }
     viscosity = std::max(0.5 * viscosity, 1e-12 * stiffness);

@@ -180,6 +180,7 @@ private:
     bool converged = false;
     int iterations = 0;
     std::string failure;
+    double jump_work = 0.0; ///< pseudo_transient: external work of the step it passed
   };
 
   void number_equations();
@@ -202,10 +203,17 @@ private:
   bool try_increment(double from, double to, int depth, StepReport& report);
   /// Trapezoidal work of the converged forces over the trial increment (N mm).
   double increment_work() const;
-  /// Whether the trial state (converged) keeps the running energy error within
+  /// A converged trial step's work and the elements' energies at its end: computed once,
+  /// for the energy check and the commit.
+  struct StepEnergy {
+    double work = 0.0;
+    element::ElementEnergy end;
+  };
+  StepEnergy trial_step_energy() const { return {increment_work(), element_energy()}; }
+  /// Whether the step keeps the running energy error within
   /// NewtonSettings::energy_tolerance (always true when the control is off).
-  bool within_energy_tolerance() const;
-  void commit(double control);
+  bool within_energy_tolerance(const StepEnergy& step) const;
+  void commit(double control, const StepEnergy& step);
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
   bool tangent_is_positive_definite() const;
   void revert();
@@ -256,7 +264,6 @@ private:
   bool committed_stable_ = true;
   Eigen::VectorXd moved_; // free-DOF motion since the start of a pseudo-time step
   std::string last_pseudo_failure_;
-  std::optional<double> jump_work_; // external work of a step that passed a limit point
 
   // element buffers
   std::vector<element::NodeConfiguration> element_nodes_;
