@@ -138,26 +138,6 @@ struct OutputFiles {
   std::optional<fs::path> element_history;
 };
 
-/// The element outputs after every step (README, "DIR/element_history.csv").
-io::NumericTable element_history_table(const analysis::CyclicTestResult& result) {
-  io::NumericTable table({"step", "core_strain", "dissipated_energy",
-                          "cumulative_inelastic_deformation", "max_core_lateral_displacement",
-                          "max_casing_lateral_displacement", "max_buckling_half_waves",
-                          "max_steel_damage", "max_mortar_damage", "core_fracture",
-                          "casing_failure", "global_buckling"});
-  for (const analysis::ElementHistoryPoint& point : result.history) {
-    const analysis::BraceIndicators& indicators = point.indicators;
-    table.append_row(std::array{
-        static_cast<double>(point.step), point.core_strain, point.dissipated_energy,
-        indicators.cumulative_inelastic_deformation, indicators.max_core_lateral_displacement,
-        indicators.max_casing_lateral_displacement,
-        static_cast<double>(indicators.max_buckling_half_waves), indicators.max_steel_damage,
-        indicators.max_mortar_damage, indicators.core_fracture ? 1.0 : 0.0,
-        indicators.casing_failure ? 1.0 : 0.0, indicators.global_buckling ? 1.0 : 0.0});
-  }
-  return table;
-}
-
 void print_report(std::ostream& out, const CyclicCommand& command, const std::string& name,
                   const model::BraceModel& brace, const io::LoadingProtocol& protocol,
                   const analysis::CyclicTestResult& result, const OutputFiles& files) {
@@ -290,7 +270,7 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   fs::create_directory(command.output_directory);
   io::write_file_atomically(files.hysteresis, io::hysteresis_table(result).text());
   if (files.element_history) {
-    io::write_file_atomically(*files.element_history, element_history_table(result).text());
+    io::write_file_atomically(*files.element_history, io::element_history_table(result).text());
   }
   io::write_file_atomically(
       files.summary,

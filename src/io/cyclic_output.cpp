@@ -69,4 +69,23 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
   return summary;
 }
 
+NumericTable element_history_table(const analysis::CyclicTestResult& result) {
+  NumericTable table({"step", "core_strain", "dissipated_energy",
+                      "cumulative_inelastic_deformation", "max_core_lateral_displacement",
+                      "max_casing_lateral_displacement", "max_buckling_half_waves",
+                      "max_steel_damage", "max_mortar_damage", "core_fracture", "casing_failure",
+                      "global_buckling"});
+  for (const analysis::ElementHistoryPoint& point : result.history) {
+    const analysis::BraceIndicators& indicators = point.indicators;
+    table.append_row(std::array{
+        static_cast<double>(point.step), point.core_strain, point.dissipated_energy,
+        indicators.cumulative_inelastic_deformation, indicators.max_core_lateral_displacement,
+        indicators.max_casing_lateral_displacement,
+        static_cast<double>(indicators.max_buckling_half_waves), indicators.max_steel_damage,
+        indicators.max_mortar_damage, indicators.core_fracture ? 1.0 : 0.0,
+        indicators.casing_failure ? 1.0 : 0.0, indicators.global_buckling ? 1.0 : 0.0});
+  }
+  return table;
+}
+
 } // namespace brb::io

@@ -1,6 +1,7 @@
-// The two result files of a virtual cyclic test (README "brb cyclic"): hysteresis.csv and
-// summary.json. `brb cyclic` and `brb validate` write the same files from these builders, so
-// their columns and keys are documented (and can change) in one place.
+// The result files of a virtual cyclic test (README "brb cyclic"): hysteresis.csv,
+// summary.json and, when asked, element_history.csv. `brb cyclic` and `brb validate` write the same
+// files from these builders, so their columns and keys are documented (and can change) in one
+// place.
 #pragma once
 
 #include "brb/analysis/cyclic_test.hpp"
@@ -24,5 +25,10 @@ NumericTable hysteresis_table(const analysis::CyclicTestResult& result);
 nlohmann::ordered_json cyclic_summary_json(const std::string& brace_name, double yield_deformation,
                                            double yield_force,
                                            const analysis::CyclicTestResult& result);
+
+/// element_history.csv: the element outputs after every step (result.history, recorded when
+/// run_cyclic_test was asked to): step, core strain, dissipated energy, the running maxima of
+/// the brace indicators and its flags as 0/1 (README keys).
+NumericTable element_history_table(const analysis::CyclicTestResult& result);
 
 } // namespace brb::io
