@@ -68,23 +68,17 @@ int run(int argc, char** argv) {
   const brb::io::ForceRecord record = brb::io::read_force_record(reference.file, reference.format);
 
   // Model step k = protocol point k; compare where the point is a record row.
+  const std::vector<double> record_force =
+      brb::io::record_force_at_rows(record, rows, protocol_file, "record_row");
   std::vector<double> deformation, test_force, model_force;
   std::size_t model_steps = 0;
   for (std::size_t i = 0; i < steps.values.size(); ++i) {
     const auto k = static_cast<std::size_t>(steps.values[i]);
     model_steps = std::max(model_steps, k);
-    if (k >= rows.values.size() || rows.values[k] < 0)
+    if (k >= record_force.size() || std::isnan(record_force[k]))
       continue;
-    const auto row = static_cast<std::size_t>(rows.values[k]);
-    const auto found = std::lower_bound(record.row.begin(), record.row.end(), row);
-    if (found == record.row.end() || *found != row) {
-      throw brb::io::InputError(protocol_file.string(), "line " + std::to_string(rows.lines[k]),
-                                "record_row " + std::to_string(row) +
-                                    " is not a kept row of the record");
-    }
-    const auto index = static_cast<std::size_t>(found - record.row.begin());
     deformation.push_back(points.values[k]);
-    test_force.push_back(record.force[index]);
+    test_force.push_back(record_force[k]);
     model_force.push_back(forces.values[i]);
   }
   const brb::validation::RecordComparison comparison = brb::validation::compare_with_record(

@@ -3,6 +3,7 @@
 #include "brb/io/csv.hpp"
 #include "brb/io/input_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -163,6 +164,24 @@ std::optional<std::filesystem::path> find_shared_directory(const std::filesystem
       return std::nullopt;
     directory = directory.parent_path();
   }
+}
+
+std::vector<double> record_force_at_rows(const ForceRecord& record, const NumericColumn& rows,
+                                         const std::filesystem::path& protocol_file,
+                                         const std::string& row_column) {
+  std::vector<double> force(rows.values.size(), std::nan(""));
+  for (std::size_t k = 0; k < rows.values.size(); ++k) {
+    if (rows.values[k] < 0.0)
+      continue;
+    const auto row = static_cast<std::size_t>(rows.values[k]);
+    const auto found = std::lower_bound(record.row.begin(), record.row.end(), row);
+    if (found == record.row.end() || *found != row) {
+      throw InputError(protocol_file.string(), "line " + std::to_string(rows.lines[k]),
+                       row_column + " " + std::to_string(row) + " is not a kept row of the record");
+    }
+    force[k] = record.force[static_cast<std::size_t>(found - record.row.begin())];
+  }
+  return force;
 }
 
 } // namespace brb::io

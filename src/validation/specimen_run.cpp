@@ -12,7 +12,6 @@
 #include "brb/material/parameter_error.hpp"
 #include "brb/model/brace_model.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -163,22 +162,10 @@ RecordSeries record_series(const RecordReference& reference, const fs::path& pro
   }
   RecordSeries series;
   series.deformation = protocol.deformation;
-  series.test_force.assign(protocol.deformation.size(), std::nan(""));
+  series.test_force =
+      io::record_force_at_rows(record, rows, protocol_file, reference.record_row_column);
   series.reversal_threshold = reference.reversal_threshold_dy * yield_deformation;
   series.energy_floor_fraction = reference.energy_floor_fraction;
-  for (std::size_t k = 0; k < rows.values.size(); ++k) {
-    if (rows.values[k] < 0.0)
-      continue;
-    const auto row = static_cast<std::size_t>(rows.values[k]);
-    const auto found = std::lower_bound(record.row.begin(), record.row.end(), row);
-    if (found == record.row.end() || *found != row) {
-      throw io::InputError(protocol_file.string(), "line " + std::to_string(rows.lines[k]),
-                           reference.record_row_column + " " + std::to_string(row) +
-                               " is not a kept row of the record " +
-                               reference.source.file.string());
-    }
-    series.test_force[k] = record.force[static_cast<std::size_t>(found - record.row.begin())];
-  }
   return series;
 }
 

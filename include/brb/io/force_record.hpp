@@ -13,6 +13,7 @@
 // end of the file.
 #pragma once
 
+#include "brb/io/csv.hpp"
 #include "brb/io/json_input.hpp"
 
 #include <cstddef>
@@ -75,6 +76,14 @@ struct ForceRecordReference {
 ForceRecordReference read_force_record_reference(const JsonValue& object,
                                                  const std::filesystem::path& base_directory,
                                                  const std::filesystem::path& shared_directory);
+
+/// The record's force (N) at each point of a protocol CSV whose column `row_column`
+/// (`rows`, read with read_numeric_column) names the record's 0-based data row of each point;
+/// NaN where it is negative (not a record point). Throws InputError (protocol file, line) for
+/// a row the record does not keep.
+std::vector<double> record_force_at_rows(const ForceRecord& record, const NumericColumn& rows,
+                                         const std::filesystem::path& protocol_file,
+                                         const std::string& row_column);
 
 /// The project's shared directory for "shared:" paths: the first ancestor A of `start` (an
 /// absolute or relative directory) that has a sub-directory A/shared; nothing when none has.
