@@ -1,5 +1,6 @@
 #include "brb/model/model.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -8,7 +9,54 @@ namespace brb::model {
 int Model::add_node(const Vector3& coordinates) {
   coordinates_.push_back(coordinates);
   fixed_.push_back({false, false, false, false, false, false});
+  masses_.push_back({0.0, 0.0, 0.0, 0.0, 0.0, 0.0});
   return node_count() - 1;
+}
+
+void Model::add_mass(int node, const NodalMass& mass) {
+  NodalMass& total = masses_.at(node);
+  for (int k = 0; k < kDofPerNode; ++k) {
+    if (!(mass[k] >= 0.0) || !std::isfinite(mass[k]))
+      throw std::invalid_argument("node " + std::to_string(node) +
+                                  ": a mass must be finite and >= 0");
+    total[k] += mass[k];
+  }
+}
+
+bool Model::has_mass() const {
+  for (const NodalMass& mass : masses_) {
+    for (const double m : mass) {
+      if (m > 0.0)
+        return true;
+    }
+  }
+  return false;
+}
+
+void Model::add_equal_dof(EqualDofConstraint constraint) {
+  check_node(constraint.master, "equal_dof master");
+  check_node(constraint.slave, "equal_dof slave");
+  if (constraint.master == constraint.slave)
+    throw std::invalid_argument("equal_dof: a node cannot be its own master");
+  if (constraint.dofs.empty())
+    throw std::invalid_argument("equal_dof: no DOF listed");
+  equal_dofs_.push_back(std::move(constraint));
+}
+
+void Model::add_rigid_diaphragm(RigidDiaphragmConstraint constraint) {
+  check_node(constraint.master, "rigid_diaphragm master");
+  for (const int slave : constraint.slaves) {
+    check_node(slave, "rigid_diaphragm node");
+    if (slave == constraint.master)
+      throw std::invalid_argument("rigid_diaphragm: the master cannot be one of its nodes");
+  }
+  diaphragms_.push_back(std::move(constraint));
+}
+
+void Model::check_node(int node, const std::string& what) const {
+  if (node < 0 || node >= node_count())
+    throw std::out_of_range(what + " refers to node " + std::to_string(node) +
+                            " but the model has " + std::to_string(node_count()) + " nodes");
 }
 
 void Model::fix(int node, Dof dof) {

@@ -1,6 +1,7 @@
 // Model: nodes with six degrees of freedom (three translations, three rotations), their
-// fixities, and the elements between them. A 2D analysis is a 3D model whose
-// out-of-plane DOF are fixed (one code path). Units: mm, N.
+// fixities, nodal masses, multi-point constraints (equal DOF, rigid floor diaphragms) and the
+// elements between them. A 2D analysis is a 3D model whose out-of-plane DOF are removed by
+// the DOF map (dof_map.hpp; one code path). Units: mm, N, tonne.
 #pragma once
 
 #include "brb/element/element.hpp"
@@ -8,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace brb::model {
@@ -19,6 +21,25 @@ inline constexpr int kDofPerNode = 6;
 /// Degrees of freedom of a node, in the order of the global vectors.
 enum Dof : int { ux = 0, uy = 1, uz = 2, rx = 3, ry = 4, rz = 5 };
 
+/// Lumped nodal mass: translational masses (tonne) on ux, uy, uz and rotational inertias
+/// (tonne mm^2) on rx, ry, rz.
+using NodalMass = std::array<double, kDofPerNode>;
+
+/// The listed DOF of `slave` equal those of `master` (small displacements).
+struct EqualDofConstraint {
+  int master = -1;
+  int slave = -1;
+  std::vector<Dof> dofs;
+};
+
+/// A rigid floor slab in the plane normal to global Z: the in-plane motion (ux, uy, rz) of
+/// each slave follows the master's rigid-body motion, u_s = u_m - (y_s - y_m) rz_m,
+/// v_s = v_m + (x_s - x_m) rz_m, rz_s = rz_m (small in-plane rotation of the slab).
+struct RigidDiaphragmConstraint {
+  int master = -1;
+  std::vector<int> slaves;
+};
+
 class Model {
 public:
   /// Adds a node at `coordinates` (mm); returns its index.
@@ -28,6 +49,19 @@ public:
   void fix(int node, Dof dof);
   /// Restrains all six DOF.
   void fix_all(int node);
+
+  /// Adds a lumped mass to a node (masses add up); each component >= 0.
+  void add_mass(int node, const NodalMass& mass);
+  const NodalMass& mass(int node) const { return masses_.at(node); }
+  /// Whether any node carries mass.
+  bool has_mass() const;
+
+  /// Multi-point constraints; the DOF map resolves them (chains of constraints allowed,
+  /// cycles and a DOF slaved twice are errors).
+  void add_equal_dof(EqualDofConstraint constraint);
+  void add_rigid_diaphragm(RigidDiaphragmConstraint constraint);
+  std::span<const EqualDofConstraint> equal_dofs() const { return equal_dofs_; }
+  std::span<const RigidDiaphragmConstraint> rigid_diaphragms() const { return diaphragms_; }
 
   /// Adds an element whose nodes() refer to existing nodes; returns a reference to it.
   template <class ElementType> ElementType& add_element(std::unique_ptr<ElementType> element) {
@@ -52,9 +86,13 @@ public:
 
 private:
   void check_element_nodes(const element::Element& element) const;
+  void check_node(int node, const std::string& what) const;
 
   std::vector<Vector3> coordinates_;
   std::vector<std::array<bool, kDofPerNode>> fixed_;
+  std::vector<NodalMass> masses_;
+  std::vector<EqualDofConstraint> equal_dofs_;
+  std::vector<RigidDiaphragmConstraint> diaphragms_;
   std::vector<std::unique_ptr<element::Element>> elements_;
 };
 
