@@ -1,0 +1,346 @@
+#include "brb/frame/frame_run.hpp"
+
+#include "brb/analysis/modal_analysis.hpp"
+#include "brb/model/dof_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace brb::frame {
+
+namespace {
+
+constexpr double kStandardGravity = 9806.65; // mm/s^2
+
+using analysis::GroundAcceleration;
+using model::kDofPerNode;
+
+/// The implicit or explicit solver behind one interface (one virtual call per step).
+class DynamicSolver {
+public:
+  virtual ~DynamicSolver() = default;
+  virtual analysis::TransientStepReport step(double dt) = 0;
+  virtual Eigen::VectorXd displacement() const = 0;
+  virtual Eigen::VectorXd acceleration() const = 0;
+  virtual const Eigen::VectorXd& internal_force() const = 0;
+  virtual const analysis::TransientEnergy& energy() const = 0;
+  virtual const std::vector<analysis::FallbackRecord>& fallbacks() const = 0;
+};
+
+class ImplicitSolver final : public DynamicSolver {
+public:
+  explicit ImplicitSolver(analysis::TransientAnalysis& analysis) : analysis_(analysis) {}
+  analysis::TransientStepReport step(double dt) override { return analysis_.step(dt); }
+  Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
+  Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
+  const Eigen::VectorXd& internal_force() const override { return analysis_.internal_force(); }
+  const analysis::TransientEnergy& energy() const override { return analysis_.energy(); }
+  const std::vector<analysis::FallbackRecord>& fallbacks() const override {
+    return analysis_.fallbacks();
+  }
+
+private:
+  analysis::TransientAnalysis& analysis_;
+};
+
+/// Follows what the recorders and the summary need, step by step.
+class Recorder {
+public:
+  Recorder(const FrameModel& frame, const FrameRunOptions& options, FrameRunResult& result)
+      : frame_(frame), options_(options), result_(result) {
+    result_.max_drift.assign(frame.stories.size(), 0.0);
+    result_.residual_drift.assign(frame.stories.size(), 0.0);
+    result_.peak_floor_acceleration.assign(frame.floors.size(), 0.0);
+    for (const BraceReference& brace : frame.braces) {
+      BraceSummary summary;
+      summary.id = brace.id;
+      summary.fidelity = brace.fidelity;
+      result_.braces.push_back(summary);
+      last_brace_state_.push_back({0.0, 0.0});
+    }
+    const RecorderRequest& asked = options.recorders;
+    if (asked.drifts) {
+      History& drifts = result_.histories["drifts"];
+      drifts.columns.push_back("time");
+      for (const StoryReference& story : frame.stories) {
+        drifts.columns.push_back("drift_x_" + story.name);
+        if (frame.dimension == 3)
+          drifts.columns.push_back("drift_y_" + story.name);
+      }
+    }
+    if (asked.floor_accelerations) {
+      History& accelerations = result_.histories["floor_accelerations"];
+      accelerations.columns.push_back("time");
+      for (const FloorReference& floor : frame.floors) {
+        accelerations.columns.push_back("accel_x_" + floor.name + "_g");
+        if (frame.dimension == 3)
+          accelerations.columns.push_back("accel_y_" + floor.name + "_g");
+      }
+    }
+    if (asked.base_shear) {
+      History& shear = result_.histories["base_shear"];
+      shear.columns = {"time", "base_shear_x"};
+      if (frame.dimension == 3)
+        shear.columns.push_back("base_shear_y");
+    }
+    if (asked.energy) {
+      result_.histories["energy"].columns = {"time",  "input",  "static_work", "kinetic",
+                                             "damping", "stored", "dissipated", "error"};
+    }
+    for (const int id : asked.braces) {
+      const auto found = std::find_if(frame.braces.begin(), frame.braces.end(),
+                                      [id](const BraceReference& b) { return b.id == id; });
+      if (found == frame.braces.end())
+        throw std::invalid_argument("brace histories asked for element " + std::to_string(id) +
+                                    ", which is not a brb element");
+      recorded_braces_.push_back(static_cast<int>(found - frame.braces.begin()));
+    }
+    if (!recorded_braces_.empty()) {
+      History& braces = result_.histories["braces"];
+      braces.columns = {"time",     "brace",  "force",          "deformation", "core_strain",
+                        "cid",      "steel_damage", "mortar_damage", "core_fracture",
+                        "casing_failure", "global_buckling"};
+    }
+  }
+
+  /// Observes a converged state at `time`; returns the largest story drift ratio.
+  double observe(double time, const DynamicSolver& solver, const Eigen::Vector3d& ground) {
+    const Eigen::VectorXd displacement = solver.displacement();
+    double largest_drift = 0.0;
+    std::vector<double> drift_row{time};
+    for (std::size_t s = 0; s < frame_.stories.size(); ++s) {
+      const StoryReference& story = frame_.stories[s];
+      const Eigen::Vector3d relative =
+          displacement.segment<3>(kDofPerNode * story.top) -
+          displacement.segment<3>(kDofPerNode * story.bottom);
+      const double drift_x = relative.x() / story.height, drift_y = relative.y() / story.height;
+      const double drift = std::hypot(drift_x, drift_y);
+      result_.max_drift[s] = std::max(result_.max_drift[s], drift);
+      result_.residual_drift[s] = drift;
+      largest_drift = std::max(largest_drift, drift);
+      drift_row.push_back(drift_x);
+      if (frame_.dimension == 3)
+        drift_row.push_back(drift_y);
+    }
+    if (options_.recorders.drifts)
+      result_.histories["drifts"].rows.push_back(std::move(drift_row));
+
+    if (!frame_.floors.empty()) {
+      const Eigen::VectorXd acceleration = solver.acceleration();
+      std::vector<double> row{time};
+      for (std::size_t f = 0; f < frame_.floors.size(); ++f) {
+        const Eigen::Vector3d absolute =
+            (acceleration.segment<3>(kDofPerNode * frame_.floors[f].node) + ground) /
+            kStandardGravity;
+        result_.peak_floor_acceleration[f] =
+            std::max(result_.peak_floor_acceleration[f], std::hypot(absolute.x(), absolute.y()));
+        row.push_back(absolute.x());
+        if (frame_.dimension == 3)
+          row.push_back(absolute.y());
+      }
+      if (options_.recorders.floor_accelerations)
+        result_.histories["floor_accelerations"].rows.push_back(std::move(row));
+    }
+
+    const Eigen::VectorXd& force = solver.internal_force();
+    Eigen::Vector2d shear = Eigen::Vector2d::Zero();
+    for (const int node : frame_.support_nodes)
+      shear += force.segment<2>(kDofPerNode * node);
+    // the base shear is the sum of the support reactions (minus the elements' forces on them)
+    result_.peak_base_shear = std::max(result_.peak_base_shear, shear.norm());
+    if (options_.recorders.base_shear) {
+      std::vector<double> row{time, -shear.x()};
+      if (frame_.dimension == 3)
+        row.push_back(-shear.y());
+      result_.histories["base_shear"].rows.push_back(std::move(row));
+    }
+
+    const analysis::TransientEnergy& energy = solver.energy();
+    if (options_.recorders.energy) {
+      result_.histories["energy"].rows.push_back(
+          {time, energy.input, energy.static_work, energy.kinetic, energy.damping, energy.stored,
+           energy.dissipated, energy.absolute_error()});
+    }
+
+    for (std::size_t b = 0; b < frame_.braces.size(); ++b)
+      observe_brace(b);
+    for (const int b : recorded_braces_) {
+      const BraceReference& brace = frame_.braces[b];
+      const BraceSummary& summary = result_.braces[b];
+      double steel = 0.0, mortar = 0.0;
+      if (brace.full) {
+        steel = brace.full->indicators().max_steel_damage;
+        mortar = brace.full->indicators().max_mortar_damage;
+      } else {
+        steel = brace.truss->damage();
+      }
+      result_.histories["braces"].rows.push_back(
+          {time, static_cast<double>(brace.id), brace.axial_force(), brace.deformation(),
+           brace.core_strain(), summary.cumulative_inelastic_deformation, steel, mortar,
+           summary.core_fracture ? 1.0 : 0.0, summary.casing_failure ? 1.0 : 0.0,
+           summary.global_buckling ? 1.0 : 0.0});
+    }
+    return largest_drift;
+  }
+
+private:
+  void observe_brace(std::size_t b) {
+    const BraceReference& brace = frame_.braces[b];
+    BraceSummary& summary = result_.braces[b];
+    const double force = brace.axial_force();
+    const double deformation = brace.deformation();
+    summary.max_tension = std::max(summary.max_tension, force);
+    summary.max_compression = std::max(summary.max_compression, -force);
+    summary.max_core_strain = std::max(summary.max_core_strain, std::abs(brace.core_strain()));
+    if (brace.full) {
+      const analysis::BraceIndicators& indicators = brace.full->indicators();
+      summary.cumulative_inelastic_deformation = indicators.cumulative_inelastic_deformation;
+      summary.core_fracture = indicators.core_fracture;
+      summary.casing_failure = indicators.casing_failure;
+      summary.global_buckling = indicators.global_buckling;
+    } else {
+      // CID as BraceIndicators defines it: sum |d(delta) - dF / K0| / dy, K0 = Py / dy
+      auto& [last_force, last_deformation] = last_brace_state_[b];
+      const double initial_stiffness = brace.yield_force / brace.yield_deformation;
+      summary.cumulative_inelastic_deformation +=
+          std::abs(deformation - last_deformation - (force - last_force) / initial_stiffness) /
+          brace.yield_deformation;
+      last_force = force;
+      last_deformation = deformation;
+      summary.core_fracture = brace.truss->damage() >= 0.9;
+    }
+  }
+
+  const FrameModel& frame_;
+  const FrameRunOptions& options_;
+  FrameRunResult& result_;
+  std::vector<std::pair<double, double>> last_brace_state_; // (force, deformation) per brace
+  std::vector<int> recorded_braces_;
+};
+
+/// The damping of the options on the analysis (after gravity), with the modal periods.
+analysis::DampingSpec damping_spec(const FrameModel& frame, const FrameRunOptions& options,
+                                   const std::vector<analysis::Mode>& modes) {
+  analysis::DampingSpec spec;
+  const DampingOptions& damping = options.damping;
+  const auto frequency = [&](int mode) {
+    if (mode < 1 || mode > static_cast<int>(modes.size()))
+      throw std::invalid_argument("damping: mode " + std::to_string(mode) + " asked, the model has " +
+                                  std::to_string(modes.size()) + " modes with mass");
+    return modes[mode - 1].circular_frequency;
+  };
+  switch (damping.kind) {
+  case DampingOptions::Kind::none:
+    break;
+  case DampingOptions::Kind::rayleigh: {
+    const auto [a0, a1] = analysis::rayleigh_coefficients(
+        frequency(damping.mode_i), damping.ratio_i, frequency(damping.mode_j), damping.ratio_j);
+    spec.mass_factor = a0;
+    spec.stiffness_factor = a1;
+    if (damping.exclude_braces)
+      spec.include_in_stiffness_damping = frame.in_stiffness_damping;
+    break;
+  }
+  case DampingOptions::Kind::modal:
+    spec.modal_ratios.assign(
+        std::min<std::size_t>(static_cast<std::size_t>(damping.modal_modes), modes.size()),
+        damping.modal_ratio);
+    break;
+  }
+  return spec;
+}
+
+} // namespace
+
+FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAcceleration>& components,
+                                const FrameRunOptions& options) {
+  if (components.empty())
+    throw std::invalid_argument("a time-history analysis needs a ground motion");
+  if (components.size() > options.directions.size())
+    throw std::invalid_argument("more ground-motion components than directions");
+  FrameRunResult result;
+  double record_duration = 0.0;
+  for (const GroundAcceleration& component : components) {
+    record_duration = std::max(
+        record_duration, component.dt * static_cast<double>(component.acceleration.size() - 1));
+  }
+  const double dt = options.dt > 0.0 ? options.dt : components.front().dt;
+  result.duration = record_duration + options.free_vibration;
+
+  analysis::TransientSettings settings;
+  settings.integrator = options.integrator == Integrator::hht ? analysis::TimeIntegrator::hht
+                                                              : analysis::TimeIntegrator::newmark;
+  settings.hht_alpha = options.integrator == Integrator::hht ? options.hht_alpha : 0.0;
+  analysis::TransientAnalysis analysis(*frame.model, model::DofMap::build(*frame.model, frame.dimension),
+                                       settings);
+
+  // Gravity, held during the dynamic run.
+  const analysis::TransientStepReport gravity =
+      analysis.apply_static_load(frame.gravity_load, std::max(frame.gravity_steps, 1));
+  result.gravity_converged = gravity.converged;
+  if (!gravity.converged) {
+    result.stop_reason = "gravity load did not converge: " + gravity.failure;
+    return result;
+  }
+
+  const std::vector<analysis::Mode> modes =
+      analysis::modal_analysis(analysis.tangent(), analysis.mass(), analysis.dof_map(),
+                               std::max({options.damping.mode_i, options.damping.mode_j,
+                                         options.damping.modal_modes, 3}));
+  for (const analysis::Mode& mode : modes)
+    result.periods.push_back(mode.period);
+  analysis.set_damping(damping_spec(frame, options, modes));
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    GroundAcceleration component = components[c];
+    component.direction = options.directions[c];
+    analysis.add_ground_acceleration(std::move(component));
+  }
+
+  ImplicitSolver solver(analysis);
+  Recorder recorder(frame, options, result);
+  const auto ground_at = [&](double time) {
+    Eigen::Vector3d ground = Eigen::Vector3d::Zero();
+    for (std::size_t c = 0; c < components.size(); ++c)
+      ground += options.directions[c] * components[c].at(time);
+    return ground;
+  };
+  recorder.observe(0.0, solver, ground_at(0.0));
+
+  const auto step_count = static_cast<long>(std::ceil(result.duration / dt - 1e-9));
+  result.converged = true;
+  for (long n = 1; n <= step_count; ++n) {
+    const double target = std::min(static_cast<double>(n) * dt, result.duration);
+    const analysis::TransientStepReport report = solver.step(target - result.end_time);
+    if (!report.converged) {
+      result.converged = false;
+      std::ostringstream reason;
+      reason << "step to t = " << target << " s did not converge after every fallback: "
+             << report.failure;
+      result.stop_reason = reason.str();
+      break;
+    }
+    result.end_time = target;
+    ++result.steps;
+    const double drift = recorder.observe(target, solver, ground_at(target));
+    if (drift > options.drift_limit) {
+      result.collapsed = true;
+      std::ostringstream reason;
+      reason << "collapse: a story drift ratio of " << drift << " exceeded the limit "
+             << options.drift_limit << " at t = " << target << " s";
+      result.stop_reason = reason.str();
+      break;
+    }
+  }
+  if (result.stop_reason.empty())
+    result.stop_reason = "completed";
+  result.energy = solver.energy();
+  result.fallbacks = solver.fallbacks();
+  result.energy_balance_error =
+      std::abs(result.energy.absolute_error()) / std::max(std::abs(result.energy.input), 1e-30);
+  return result;
+}
+
+} // namespace brb::frame
