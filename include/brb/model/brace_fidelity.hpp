@@ -1,0 +1,42 @@
+// The `auto` fidelity of a brace in a frame (DESIGN.md section 4): the cheapest level whose
+// error stays within a stated bound for the brace. Until the run-time-against-error study
+// (issue 9) derives the rule from measurements, `auto` takes `truss` only where the truss is
+// known to be accurate and `full` wherever the brace could show what a truss cannot
+// (global buckling, casing failure, friction overstrength in compression):
+//   truss when all hold, else full:
+//   1. the brace has a casing with a steel tube (a bare core buckles; a mortar-only casing
+//      can crack and crush: BRB_SOURCE_FACTS section 6, small BRB cases 1 and 4);
+//   2. the casing assembly's Euler load P_E = pi^2 E I / L_y^2 (tube + fill + core, about the
+//      weaker axis, pinned over the yielding length) is at least kEulerMargin x P_y.
+//      kEulerMargin = 1.5 x 1.5: Watanabe et al. (1988) ask P_E / P_y >= 1.5 of the
+//      restrainer; the 1.5 on top covers the adjusted compression strength beta omega P_y
+//      of AISC 341 qualified braces (typically 1.3-1.6);
+//   3. friction coefficient <= 0.15 (the source's 0.1 and common unbonding layers): the
+//      truss's steel law is symmetric, and friction raises the compression force.
+// Measured error of `truss` where the rule picks it: Girona D3, loop energy at 5 dy -2.34 %
+// against the full model's -2.35 % (README "Performance").
+#pragma once
+
+#include "brb/model/brace_spec.hpp"
+
+#include <string>
+
+namespace brb::model {
+
+struct FidelityChoice {
+  Fidelity fidelity = Fidelity::full;
+  std::string reason;      ///< which condition decided, with its numbers
+  double euler_ratio = 0.0; ///< P_E / P_y (0 without casing)
+};
+
+inline constexpr double kEulerMargin = 2.25;
+inline constexpr double kTrussFrictionLimit = 0.15;
+
+/// E I (N mm^2) of casing tube + mortar fill + core about the weaker section axis,
+/// from their fiber meshes.
+double casing_assembly_flexural_rigidity(const BraceSpec& spec);
+
+/// The rule above for a brace whose fidelity is `auto`.
+FidelityChoice choose_auto_fidelity(const BraceSpec& spec);
+
+} // namespace brb::model
