@@ -1,5 +1,7 @@
 #include "cyclic_command.hpp"
 
+#include "output_directory.hpp"
+
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/atomic_file.hpp"
 #include "brb/io/brace_input.hpp"
@@ -59,28 +61,6 @@ model::BraceModel build_brace(const model::BraceSpec& spec, const fs::path& file
                                                            : model::build_brace_model(spec);
   } catch (const ParameterError& error) {
     throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
-  }
-}
-
-/// `--out` must name a directory that exists or can be created because its parent exists.
-/// Checked before the analysis, so that a path that cannot receive the results is an input
-/// error and nothing is written.
-void check_output_directory(const fs::path& directory) {
-  const std::string name = directory.string();
-  if (directory.empty())
-    throw io::InputError("--out", "", "must name a directory");
-  if (fs::exists(directory)) {
-    if (!fs::is_directory(directory))
-      throw io::InputError(name, "", "--out must name a directory, and this is not one");
-    return;
-  }
-  // "out/" names the directory "out": drop the trailing separator before taking the parent.
-  const fs::path target = directory.has_filename() ? directory : directory.parent_path();
-  const fs::path parent = target.parent_path();
-  if (!parent.empty() && !fs::is_directory(parent)) {
-    throw io::InputError(name, "",
-                         "cannot create the output directory: its parent '" + parent.string() +
-                             "' does not exist");
   }
 }
 

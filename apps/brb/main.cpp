@@ -2,6 +2,7 @@
 // not converge, output could not be written, ...), 2 invalid input or usage.
 #include "calibrate_command.hpp"
 #include "cyclic_command.hpp"
+#include "frame_command.hpp"
 #include "material_command.hpp"
 #include "validate_command.hpp"
 
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
   const CLI::App* material = brb::cli::add_material_command(app, material_command);
   brb::cli::CyclicCommand cyclic_command;
   const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
+  brb::cli::FrameCommand frame_command;
+  const CLI::App* frame = brb::cli::add_frame_command(app, frame_command);
   brb::cli::ValidateCommand validate_command;
   const CLI::App* validate = brb::cli::add_validate_command(app, validate_command);
   brb::cli::CalibrateCommand calibrate_command;
@@ -41,8 +44,8 @@ int main(int argc, char** argv) {
       return app.exit(error); // --help
     }
     std::cerr << "brb: error: " << error.what() << "\n"
-              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, validate, "
-                 "calibrate) for usage.\n";
+              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, "
+                 "validate, calibrate) for usage.\n";
     return kInvalidInput;
   }
 
@@ -51,6 +54,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_material_command(material_command, std::cerr);
     if (cyclic->parsed())
       return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
+    if (frame->parsed())
+      return brb::cli::run_frame_command(frame_command, std::cout, std::cerr);
     if (validate->parsed())
       return brb::cli::run_validate_command(validate_command, std::cout);
     if (calibrate->parsed())

@@ -1,0 +1,33 @@
+// `brb frame`: a nonlinear time-history analysis of a frame model under a ground motion
+// (README: "brb frame").
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace brb::cli {
+
+struct FrameCommand {
+  std::filesystem::path model;  ///< MODEL.json (README: "Frame model files")
+  std::filesystem::path motion; ///< ground motion along the model's first direction
+  /// A second horizontal component (3D models with two ground directions).
+  std::optional<std::filesystem::path> motion_y;
+  double scale = 1.0;                ///< factor on the record(s)
+  std::optional<std::string> units;  ///< g, m/s^2, mm/s^2 (AT2: from the header by default)
+  std::optional<double> record_dt;   ///< s, for single-column records
+  std::optional<double> duration;    ///< s, analyse only the first part of the record
+  std::filesystem::path output_directory;
+};
+
+CLI::App* add_frame_command(CLI::App& app, FrameCommand& command);
+
+/// Reads and checks every input first (InputError: nothing written), runs the analysis,
+/// writes the histories and DIR/summary.json, prints the peak drifts. Returns 0 when the run
+/// completed (or stopped at a collapse it detected), 1 when a step failed after every fallback.
+int run_frame_command(const FrameCommand& command, std::ostream& report, std::ostream& notes);
+
+} // namespace brb::cli
