@@ -3,6 +3,7 @@
 // motion, the beam-column amplification and the linear element for small displacements, and
 // every tangent against finite differences of the forces.
 #include "brb/element/elastic_beam_column.hpp"
+#include "brb/element/frame_element_specs.hpp"
 #include "brb/material/parameter_error.hpp"
 
 #include "brb/analysis/static_analysis.hpp"
@@ -316,6 +317,20 @@ TEST(ElasticBeamColumn, CorotationalCantileverAmplifiesTheLateralDeflectionUnder
   EXPECT_NEAR(coarse_error / fine_error, 4.0, 0.4); // second-order convergence
   const double approximation = 1.0 / (1.0 - axial_load / critical);
   EXPECT_NEAR(fine, approximation, 0.02 * approximation);
+}
+
+TEST(ElasticBeamColumn, FactoryUsesTheFrameFilesDefaultOrientation) {
+  // Reference: the frame schema's default vecxz, global Z for a member not along Z and
+  // global X for a vertical one; both make a planar frame in X-Z bend about local y.
+  ElasticBeamColumnSpec spec{{0, 1}, kMember, std::nullopt, BeamGeometry::pdelta};
+  const auto column = make_elastic_beam_column(spec, Vector3::Zero(), Vector3(0.0, 0.0, 3500.0));
+  EXPECT_LT((column->local_axes().col(2) - Vector3::UnitX()).norm(), 1e-15);
+  const auto beam = make_elastic_beam_column(spec, Vector3::Zero(), Vector3(6000.0, 0.0, 0.0));
+  EXPECT_LT((beam->local_axes().col(2) - Vector3::UnitZ()).norm(), 1e-15);
+  EXPECT_EQ(beam->geometry(), BeamGeometry::pdelta);
+  spec.orientation = Vector3(0.0, 0.0, 2.0);
+  EXPECT_THROW(make_elastic_beam_column(spec, Vector3::Zero(), Vector3(0.0, 0.0, 3500.0)),
+               ParameterError);
 }
 
 TEST(ElasticBeamColumn, RejectsInvalidPropertiesAndGeometryNamingTheField) {

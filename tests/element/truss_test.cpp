@@ -112,6 +112,32 @@ TEST(Truss, EnergyEqualsTheWorkOfTheAxialForce) {
   EXPECT_NEAR(energy.stored + energy.dissipated, work, 1e-5 * work);
 }
 
+TEST(Truss, MortarLawFollowsTheUniaxialLawThroughTheVariant) {
+  // Reference: MortarUniaxial (lc = L) driven on its own: tension past ft (cracking and
+  // softening), then compression; N = A sigma to round-off.
+  material::MortarParameters mortar;
+  mortar.youngs_modulus = 30000.0;
+  mortar.compressive_strength = 40.0;
+  mortar.tensile_strength = 3.0;
+  mortar.fracture_energy = 5.0; // long enough a softening branch for L = 2500 mm
+  const auto truss = make(mortar);
+  const material::MortarUniaxial law(mortar, kLength);
+  material::MortarState state = law.initial_state();
+  double worst = 0.0, peak = 0.0;
+  for (int step = 0; step <= 400; ++step) {
+    const double strain = step <= 200 ? 1e-6 * step : 2e-4 - 3e-6 * (step - 200);
+    const double force = stretch(*truss, strain).force.segment<3>(6).dot(kAxis);
+    truss->commit();
+    const auto response = law.evaluate(state, strain);
+    state = response.state;
+    worst = std::max(worst, std::abs(force - kArea * response.stress));
+    peak = std::max(peak, force);
+  }
+  EXPECT_LT(worst, 1e-12 * kArea * mortar.compressive_strength);
+  EXPECT_GT(truss->energy().dissipated, 0.0); // it cracked
+  EXPECT_LE(peak, kArea * mortar.tensile_strength * (1.0 + 1e-12));
+}
+
 TEST(Truss, MakeTrussRejectsBadParametersNamingTheField) {
   const auto field_of = [](const TrussSpec& spec, const Vector3& end) -> std::string {
     try {
