@@ -473,7 +473,11 @@ private:
             material.at("E", "modulus E (MPa; N/mm or N mm/rad in a spring)"), "modulus E", "")};
       } else if (law == "steel") {
         // The steel schema of `brb material` without lc: a copy without "law" is read by
-        // the steel reader at the same JSON path.
+        // the steel reader at the same JSON path (the keys are checked here first so that an
+        // unknown key's message lists "law" too).
+        material.expect_object(
+            {"law", "units", "E", "nu", "fy", "H_kin", "H_iso", "chaboche", "voce", "fu", "Gf"},
+            "steel parameters {law, E, nu, fy, H_kin, H_iso, ...} (lc comes from the element)");
         json parameters = material.json();
         parameters.erase("law");
         const JsonValue steel(parameters, source_, material.path());

@@ -322,6 +322,14 @@ TEST_F(FrameInputTest, DefaultsOfBracesGravityDampingAndRecorders) {
   EXPECT_FALSE(spec.recorders.drifts);
 }
 
+TEST_F(FrameInputTest, ABraceWithinOneMillimetreOfTheNodeDistanceIsAccepted) {
+  // 4000.9 + 2 x 500 = 5000.9 mm between nodes 5000 mm apart: within the 1 mm of the schema.
+  json document = json::parse(kFullModel, nullptr, true, true);
+  document["elements"][6]["brace"]["core"]["yielding_length"] = 4000.9;
+  const model::FrameSpec spec = read_frame(write_model(document));
+  EXPECT_DOUBLE_EQ(kind_of<model::BraceElementSpec>(spec.elements[6]).brace.total_length(), 5000.9);
+}
+
 TEST_F(FrameInputTest, ModalDampingAndTheExplicitIntegrator) {
   json document = json::parse(kMinimalModel);
   document["damping"] = {{"type", "modal"}, {"ratio", 0.03}, {"modes", 6}};
@@ -535,6 +543,14 @@ INSTANTIATE_TEST_SUITE_P(
                          [](json& d) { d["materials"]["hinge_steel"]["fy"] = -3; },
                          "/materials/hinge_steel/fy",
                          {"> 0"}},
+        InvalidFrameCase{"unknown key of a steel law",
+                         [](json& d) { d["materials"]["hinge_steel"]["fyy"] = 300; },
+                         "/materials/hinge_steel/fyy",
+                         {"unknown key", "law, units, E, nu, fy"}},
+        InvalidFrameCase{"lc in a steel law",
+                         [](json& d) { d["materials"]["hinge_steel"]["lc"] = 10; },
+                         "/materials/hinge_steel/lc",
+                         {"unknown key"}},
         InvalidFrameCase{"mortar law without Gf",
                          [](json& d) { d["materials"]["grout"].erase("Gf"); },
                          "/materials/grout/Gf",
