@@ -1,0 +1,20 @@
+#include "brb/model/frame_spec.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace brb::model {
+
+const FrameNodeSpec& FrameSpec::node(int id) const {
+  for (const auto& candidate : nodes) {
+    if (candidate.id == id)
+      return candidate;
+  }
+  throw std::out_of_range("frame model: no node with id " + std::to_string(id));
+}
+
+double FrameSpec::element_length(const FrameElementSpec& element) const {
+  return (node(element.nodes[1]).coordinates - node(element.nodes[0]).coordinates).norm();
+}
+
+} // namespace brb::model
