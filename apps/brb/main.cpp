@@ -4,6 +4,7 @@
 #include "cyclic_command.hpp"
 #include "frame_command.hpp"
 #include "material_command.hpp"
+#include "spectrum_command.hpp"
 #include "validate_command.hpp"
 
 #include "brb/io/input_error.hpp"
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
   const CLI::App* validate = brb::cli::add_validate_command(app, validate_command);
   brb::cli::CalibrateCommand calibrate_command;
   const CLI::App* calibrate = brb::cli::add_calibrate_command(app, calibrate_command);
+  brb::cli::SpectrumCommand spectrum_command;
+  const CLI::App* spectrum = brb::cli::add_spectrum_command(app, spectrum_command);
 
   try {
     app.parse(argc, argv);
@@ -45,7 +48,7 @@ int main(int argc, char** argv) {
     }
     std::cerr << "brb: error: " << error.what() << "\n"
               << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, "
-                 "validate, calibrate) for usage.\n";
+                 "validate, calibrate, spectrum) for usage.\n";
     return kInvalidInput;
   }
 
@@ -60,6 +63,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_validate_command(validate_command, std::cout);
     if (calibrate->parsed())
       return brb::cli::run_calibrate_command(calibrate_command, std::cout);
+    if (spectrum->parsed())
+      return brb::cli::run_spectrum_command(spectrum_command, std::cout);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;
