@@ -4,6 +4,7 @@
 // gravity against the design's seismic weight, and the ELF numbers of its "design" block
 // recomputed here from ASCE 7-16 (an independent computation of the script's formulas).
 #include "brb/io/brace_input.hpp"
+#include "brb/model/brace_model.hpp"
 #include "brb/model/brace_spec.hpp"
 
 #include <gtest/gtest.h>
@@ -236,6 +237,7 @@ TEST_P(FrameExample, BraceFilesAreReadAndSpanTheirWorkPointsWithTheDesignedCore)
     ++braces;
     const int id = element.at("id");
     const fs::path file = model_file_.parent_path() / element.at("brace").get<std::string>();
+    ASSERT_TRUE(fs::exists(file)) << "element " << id << ": no brace file " << file;
     const double work_points =
         distance(node(element.at("nodes").at(0)), node(element.at("nodes").at(1)));
     // The brace file's own numbers: connection + transition at both ends + yielding length.
@@ -249,6 +251,12 @@ TEST_P(FrameExample, BraceFilesAreReadAndSpanTheirWorkPointsWithTheDesignedCore)
     ASSERT_NO_THROW(spec = read_brace(file)) << file;
     EXPECT_NEAR(spec.total_length(), work_points, 1e-6) << file;
     ASSERT_TRUE(spec.casing.has_value()) << file;
+    // Its model (core, end zones, casing, contact links) builds: the geometry is consistent.
+    double yield_force = 0.0;
+    ASSERT_NO_THROW({
+      const model::BraceModel brace = model::build_brace_model(spec);
+      yield_force = brace.yield_force;
+    }) << file;
     ASSERT_EQ(designs.count(spec.name), 1u) << "no design entry for " << spec.name;
     const json& design = designs.at(spec.name);
     const double fy = spec.steel.yield_stress;
@@ -256,6 +264,7 @@ TEST_P(FrameExample, BraceFilesAreReadAndSpanTheirWorkPointsWithTheDesignedCore)
     EXPECT_NEAR(core_area, design.at("Asc").get<double>(), 1e-6 * core_area) << file;
     EXPECT_GE(core_area, design.at("Asc_required").get<double>()) << file;
     EXPECT_GE(0.9 * fy * core_area, design.at("Pu").get<double>()) << file; // phi Fysc Asc >= Pu
+    EXPECT_NEAR(yield_force, design.at("Py").get<double>(), 1e-6 * yield_force) << file;
     // End zones stay elastic at the brace's largest compression.
     const double pmax = design.at("Pmax");
     EXPECT_GE(fy * spec.transition->section.mesh().total_area(), pmax) << file;
