@@ -443,15 +443,20 @@ void TransientAnalysis::commit(const Increment& increment, const Eigen::VectorXd
   if (increment.dynamic) {
     const Eigen::VectorXd acceleration = increment.acceleration_at(dq);
     const Eigen::VectorXd velocity = increment.velocity_at(dq);
-    energy_.input += 0.5 * (increment.ground_from + increment.ground_to).dot(dq);
-    energy_.static_work += increment.static_load.dot(dq);
+    const double input = 0.5 * (increment.ground_from + increment.ground_to).dot(dq);
+    const double static_work = increment.static_load.dot(dq);
+    energy_.input += input;
+    energy_.static_work += static_work;
+    energy_.gross_input += std::abs(input) + std::abs(static_work);
     energy_.damping += 0.5 * (damping_ * (increment.velocity + velocity)).dot(dq);
     energy_.kinetic = 0.5 * velocity.dot(mass_ * velocity);
     velocity_ = velocity;
     acceleration_ = acceleration;
     time_ = increment.to;
   } else {
-    energy_.static_work += 0.5 * (increment.external_from + increment.external).dot(dq);
+    const double static_work = 0.5 * (increment.external_from + increment.external).dot(dq);
+    energy_.static_work += static_work;
+    energy_.gross_input += std::abs(static_work);
     static_fraction_ = increment.to;
   }
   energy_.stored = elements.stored - initial_element_energy_.stored;

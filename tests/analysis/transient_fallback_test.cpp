@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace brb::analysis {
@@ -168,6 +169,107 @@ TEST(TransientFallback, StaticLoadStepsAreSubsteppedToo) {
   // held: a dynamic step at rest changes nothing
   ASSERT_TRUE(analysis.step(0.01).converged);
   EXPECT_NEAR(analysis.displacement()[ux], 30.0 / stiffness, 1e-9);
+}
+
+/// A spring f = k s + c s^3 along X whose tangent is not available away from its committed
+/// state (it returns a non-finite tangent there, which the assembler rejects): full Newton
+/// cannot leave the committed state, modified Newton on the committed tangent can.
+class TangentlessSpring final : public element::Element {
+public:
+  TangentlessSpring(std::array<int, 2> nodes, double offset, double linear, double cubic)
+      : nodes_(nodes), offset_(offset), linear_(linear), cubic_(cubic) {}
+
+  std::span<const int> nodes() const override { return nodes_; }
+  bool evaluate(std::span<const element::NodeConfiguration> configuration, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string&) override {
+    const double s = configuration[1].position.x() - configuration[0].position.x() - offset_;
+    trial_ = s;
+    const double spring_force = linear_ * s + cubic_ * s * s * s;
+    const double stiffness =
+        s == committed_ ? linear_ + 3.0 * cubic_ * s * s : std::numeric_limits<double>::quiet_NaN();
+    force = Eigen::VectorXd::Zero(12);
+    tangent = Eigen::MatrixXd::Zero(12, 12);
+    force[0] = -spring_force;
+    force[6] = spring_force;
+    tangent(0, 0) = tangent(6, 6) = stiffness;
+    tangent(0, 6) = tangent(6, 0) = -stiffness;
+    return true;
+  }
+  void commit() override { committed_ = trial_; }
+  void revert_to_committed() override { trial_ = committed_; }
+  void copy_state_from(const element::Element& other) override {
+    element::copy_element_value(*this, other);
+  }
+  element::ElementEnergy energy() const override {
+    return {0.5 * linear_ * trial_ * trial_ + 0.25 * cubic_ * std::pow(trial_, 4), 0.0};
+  }
+
+private:
+  std::array<int, 2> nodes_;
+  double offset_, linear_, cubic_;
+  double committed_ = 0.0, trial_ = 0.0;
+};
+
+TEST(TransientFallback, ModifiedNewtonPassesWhereTheTangentIsMissing) {
+  model::Model model;
+  const int ground = model.add_node({0.0, 0.0, 0.0});
+  model.fix_all(ground);
+  const int node = test::add_x_oscillator_node(model, 1000.0, 0.0, 0.0);
+  const double k = 100.0, c = 2.0;
+  model.add_element(
+      std::make_unique<TangentlessSpring>(std::array<int, 2>{ground, node}, 1000.0, k, c));
+  TransientSettings settings;
+  settings.max_halvings = 2;
+  TransientAnalysis analysis(model, model::DofMap::build(model, 3), settings);
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(model.dof_count());
+  const int ux = model::Model::global_dof(node, model::ux);
+  load[ux] = 2000.0;
+  const TransientStepReport report = analysis.apply_static_load(load, 1);
+  ASSERT_TRUE(report.converged) << report.failure;
+  // k u + c u^3 = P: u = 7.6 mm (Newton on the scalar equation, here)
+  double u = 0.0;
+  for (int i = 0; i < 50; ++i)
+    u -= (k * u + c * u * u * u - 2000.0) / (k + 3.0 * c * u * u);
+  EXPECT_NEAR(analysis.displacement()[ux], u, 1e-8 * u);
+  bool modified = false;
+  for (const FallbackRecord& record : analysis.fallbacks())
+    modified = modified || record.what == "static load: modified Newton (committed tangent)";
+  EXPECT_TRUE(modified);
+}
+
+TEST(TransientFallback, BroydenPassesWhereModifiedNewtonIsTooSlow) {
+  // A strongly stiffening spring (tangent at the solution 25 times the committed one):
+  // modified Newton with the committed tangent contracts slowly and runs out of its
+  // iterations; the secant updates learn the stiffening and converge.
+  model::Model model;
+  const int ground = model.add_node({0.0, 0.0, 0.0});
+  model.fix_all(ground);
+  const int node = test::add_x_oscillator_node(model, 1000.0, 0.0, 0.0);
+  const double k = 100.0, c = 2.0, load_value = 20000.0;
+  model.add_element(
+      std::make_unique<TangentlessSpring>(std::array<int, 2>{ground, node}, 1000.0, k, c));
+  TransientSettings settings;
+  settings.max_halvings = 0;
+  settings.fallback_iterations = 12;
+  TransientAnalysis analysis(model, model::DofMap::build(model, 3), settings);
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(model.dof_count());
+  const int ux = model::Model::global_dof(node, model::ux);
+  load[ux] = load_value;
+  const TransientStepReport report = analysis.apply_static_load(load, 1);
+  ASSERT_TRUE(report.converged) << report.failure;
+  // at the floor (no halvings allowed): Newton failed, then modified Newton, then Broyden
+  // converged (nothing recorded after it)
+  const std::vector<FallbackRecord>& fallbacks = analysis.fallbacks();
+  ASSERT_EQ(fallbacks.size(), 2u);
+  EXPECT_EQ(fallbacks[0].what, "static load: modified Newton (committed tangent)");
+  EXPECT_NE(fallbacks[0].reason.find("non-finite"), std::string::npos) << fallbacks[0].reason;
+  EXPECT_EQ(fallbacks[1].what, "static load: Broyden");
+  EXPECT_NE(fallbacks[1].reason.find("did not converge in 12"), std::string::npos)
+      << fallbacks[1].reason;
+  double u = 0.0;
+  for (int i = 0; i < 50; ++i)
+    u -= (k * u + c * u * u * u - load_value) / (k + 3.0 * c * u * u);
+  EXPECT_NEAR(analysis.displacement()[ux], u, 1e-8 * u);
 }
 
 TEST(TransientFallback, InvalidRequestsAreReported) {

@@ -62,6 +62,8 @@ TEST(TransientYielding, BraceTrussOscillatorBalancesItsEnergy) {
   EXPECT_GT(energy.dissipated, 0.0);
   EXPECT_GT(energy.dissipated, 0.2 * energy.input); // hysteresis takes a real share
   EXPECT_LT(largest_error, 1e-3 * largest_input);
+  EXPECT_LT(energy.relative_error(), 1e-3);
+  EXPECT_GE(energy.gross_input, energy.input);
   std::cout << "[ measured ] peak " << peak << " mm (" << peak / yield_deformation << " dy), input "
             << energy.input << " N mm, dissipated " << energy.dissipated << ", damping "
             << energy.damping << ", balance error " << largest_error / largest_input

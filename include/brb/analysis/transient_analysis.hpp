@@ -26,6 +26,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -99,9 +100,17 @@ struct TransientEnergy {
   double damping = 0.0;
   double stored = 0.0;
   double dissipated = 0.0;
-  /// |E_I + W_static - kinetic - damping - stored - dissipated| / max(|E_I|, gross) ...
+  /// Gross input: the sum over (sub)steps of |input step| + |static work step| (N mm), a
+  /// monotone scale for the balance (the net input oscillates and can pass through zero).
+  double gross_input = 0.0;
+  /// E_I + W_static - kinetic - damping - stored - dissipated (N mm; see the .cpp for what
+  /// it measures).
   double absolute_error() const {
     return input + static_work - kinetic - damping - stored - dissipated;
+  }
+  /// |absolute_error()| / gross_input (0 before any input).
+  double relative_error() const {
+    return gross_input > 0.0 ? std::abs(absolute_error()) / gross_input : 0.0;
   }
 };
 
