@@ -313,7 +313,6 @@ Eigen::SparseMatrix<double> TransientAnalysis::effective_tangent(const Increment
 }
 
 bool TransientAnalysis::factorize(const Eigen::SparseMatrix<double>& matrix) {
-  stiffest_ = matrix.rows() > 0 ? matrix.diagonal().cwiseAbs().maxCoeff() : 0.0;
   // The pattern (hence the ordering) is analysed again only when it changes.
   std::vector<int> pattern(matrix.outerIndexPtr(), matrix.outerIndexPtr() + matrix.outerSize() + 1);
   pattern.insert(pattern.end(), matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
@@ -331,8 +330,9 @@ bool TransientAnalysis::converged(const Increment& increment, const Eigen::Vecto
     return true;
   // Scale: the largest element force (round-off of cancelling element forces at the nodes),
   // the largest inertia, damping and external force, and 1 N; floor: positions carry a
-  // relative error of position_round_off of the model's size, which the stiffest diagonal
-  // of the effective tangent turns into force (as StaticAnalysis).
+  // relative error of position_round_off of the model's size, which the stiffest entry of
+  // the element tangent turns into force (as StaticAnalysis). Inertia and damping forces
+  // come from dq, not from positions: the mass does not enter the floor.
   double scale = assembler_.force_scale() + infinity_norm(increment.external) + 1.0;
   if (increment.dynamic) {
     scale += std::max(infinity_norm(mass_ * increment.acceleration_at(dq)),
@@ -385,6 +385,8 @@ TransientAnalysis::Attempt TransientAnalysis::solve(const Increment& increment, 
       return attempt;
     }
     if (full_newton || iteration == 0) {
+      const Eigen::SparseMatrix<double>& stiffness = assembler_.reduced_tangent();
+      stiffest_ = stiffness.nonZeros() > 0 ? stiffness.coeffs().cwiseAbs().maxCoeff() : 0.0;
       if (!factorize(effective_tangent(increment))) {
         attempt.failure = "singular effective tangent";
         return attempt;
