@@ -5,7 +5,8 @@
 // gamma = 1/2, beta = 1/4) or HHT-alpha (Hilber, Hughes, Taylor 1977; alpha in [-1/3, 0],
 // gamma = 1/2 - alpha, beta = (1 - alpha)^2 / 4), Newton-Raphson with a backtracking line
 // search. A failed step is retried: halved substeps down to a floor, then the other
-// algorithms (modified Newton on the initial stiffness, then Broyden-type secant updates);
+// algorithms (modified Newton on the tangent of the committed state, then Broyden-type
+// secant updates of its inverse);
 // every fallback is recorded. Nothing is committed until a (sub)step converges.
 //
 // Static load steps (gravity, before the dynamic run) use the same equations without
@@ -23,7 +24,9 @@
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,18 +40,23 @@ struct TransientSettings {
   double hht_alpha = 0.0; ///< in [-1/3, 0]; 0 is Newmark average acceleration
   int max_iterations = 25;
   /// Converged when |residual|_inf <= tolerance * (largest element force + largest
-  /// inertia/damping/external force + 1 N) and the energy norm |du^T r| is small (stated
-  /// in the implementation).
+  /// inertia/damping/external force + 1 N + round-off floor) after at least one Newton
+  /// correction (so a linear system is solved to round-off, never accepted at its predictor).
+  /// The round-off floor is position_round_off x model size x the largest entry of the
+  /// element tangent (T^T K T) / tolerance, as in StaticAnalysis.
   double relative_force_tolerance = 1e-8;
+  double position_round_off = 1e-14;
   bool line_search = true;
   int max_halvings = 8; ///< substep floor: dt / 2^max_halvings
+  /// At the floor: iterations allowed to modified Newton and to the Broyden update.
+  int fallback_iterations = 200;
 };
 
 /// A uniform ground acceleration component along a global direction.
 struct GroundAcceleration {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX(); ///< unit vector
-  double dt = 0.01;                                      ///< s
-  std::vector<double> acceleration;                      ///< mm/s^2
+  double dt = 0.01;                                     ///< s
+  std::vector<double> acceleration;                     ///< mm/s^2
   /// Linear interpolation between samples; zero before 0 and after the last sample.
   double at(double time) const;
 };
@@ -67,13 +75,15 @@ struct DampingSpec {
 };
 
 /// Rayleigh coefficients giving ratios xi_i, xi_j at circular frequencies w_i, w_j (rad/s):
-/// a0 = 2 w_i w_j (xi_i w_j - xi_j w_i) / (w_j^2 - w_i^2), a1 = 2 (xi_j w_j - xi_i w_i) / (w_j^2 - w_i^2).
+/// a0 = 2 w_i w_j (xi_i w_j - xi_j w_i) / (w_j^2 - w_i^2), a1 = 2 (xi_j w_j - xi_i w_i) / (w_j^2 -
+/// w_i^2).
 std::pair<double, double> rayleigh_coefficients(double w_i, double xi_i, double w_j, double xi_j);
 
 struct FallbackRecord {
-  double time = 0.0;         ///< s, start of the step that needed it
-  std::string what;          ///< e.g. "substep 1/4", "initial-stiffness Newton", "Broyden"
-  std::string reason;        ///< why the previous attempt failed
+  double time = 0.0;  ///< s, start of the step that needed it
+  std::string what;   ///< "substeps of 1/4 of the step", "modified Newton (committed tangent)",
+                      ///< "Broyden" (prefixed "static load: " in load steps)
+  std::string reason; ///< why the previous attempt failed
 };
 
 struct TransientStepReport {
@@ -90,20 +100,47 @@ struct TransientEnergy {
   double damping = 0.0;
   double stored = 0.0;
   double dissipated = 0.0;
-  /// |E_I + W_static - kinetic - damping - stored - dissipated| / max(|E_I|, gross) ...
-  double absolute_error() const { return input + static_work - kinetic - damping - stored - dissipated; }
+  /// Gross input: the sum over (sub)steps of |input step| + |static work step| (N mm), a
+  /// monotone scale for the balance (the net input oscillates and can pass through zero).
+  double gross_input = 0.0;
+  /// E_I + W_static - kinetic - damping - stored - dissipated (N mm; see the .cpp for what
+  /// it measures).
+  double absolute_error() const {
+    return input + static_work - kinetic - damping - stored - dissipated;
+  }
+  /// |absolute_error()| / gross_input (0 before any input).
+  double relative_error() const {
+    return gross_input > 0.0 ? std::abs(absolute_error()) / gross_input : 0.0;
+  }
 };
 
 class TransientAnalysis {
 public:
+  /// Evaluates the elements at the undeformed configuration (the committed start; their
+  /// energies there are the zero of the balance). Throws std::invalid_argument for settings
+  /// out of range (hht_alpha outside [-1/3, 0], max_iterations < 1, max_halvings < 0, a
+  /// tolerance <= 0); an element that cannot evaluate the start makes every step fail with
+  /// its reason.
   TransientAnalysis(model::Model& model, model::DofMap map, TransientSettings settings = {});
+  TransientAnalysis(const TransientAnalysis&) = delete; // the assembler refers to map_
+  TransientAnalysis& operator=(const TransientAnalysis&) = delete;
 
   /// Static load control from the current held load to held + `load` (full DOF vector,
   /// N and N mm) in `steps` equal increments (each with the same substepping); the total
   /// is then held during the dynamic run. Throws nothing; reports failure.
   TransientStepReport apply_static_load(const Eigen::VectorXd& load, int steps);
 
+  /// Drops the held static load at the committed state (a sudden release, e.g. free
+  /// vibration from a statically displaced state): the next step starts with the
+  /// out-of-balance force as inertia. Releasing does no work.
+  void remove_static_load();
+
+  /// Builds C at the committed state. Throws std::invalid_argument for an
+  /// include_in_stiffness_damping of the wrong size or negative factors or ratios, and
+  /// std::runtime_error when the committed tangent cannot be assembled or (modal damping)
+  /// modal_analysis fails.
   void set_damping(const DampingSpec& damping);
+  /// Throws std::invalid_argument for dt <= 0 or a direction that is not a unit vector.
   void add_ground_acceleration(GroundAcceleration component);
 
   /// Advances the time by dt (s) with the fallbacks above.
@@ -127,8 +164,41 @@ public:
   /// Tangent (T^T K T) and mass (T^T M T) of the committed state, for modal analysis.
   Eigen::SparseMatrix<double> tangent();
   const Eigen::SparseMatrix<double>& mass() const { return mass_; }
+  /// The damping matrix C on the equations (empty pattern until set_damping).
+  const Eigen::SparseMatrix<double>& damping() const { return damping_; }
 
 private:
+  /// What one Newton-type attempt of a (sub)step solves (defined in the .cpp).
+  struct Increment;
+  struct Attempt {
+    bool converged = false;
+    int iterations = 0;
+    std::string failure;
+    Eigen::VectorXd increment; ///< dq of the equations (translations and spins)
+  };
+  enum class Algorithm { newton, modified_newton, broyden };
+
+  /// A dynamic step from time `from` to `to`, or a static load step between load fractions,
+  /// from the committed state.
+  Increment make_increment(bool dynamic, double from, double to) const;
+  bool try_increment(bool dynamic, double from, double to, int depth, TransientStepReport& report);
+  Attempt solve(const Increment& increment, Algorithm algorithm, int max_iterations);
+  /// Out-of-balance force of the last assembled trial state for the trial increment dq.
+  Eigen::VectorXd residual(const Increment& increment, const Eigen::VectorXd& dq) const;
+  /// Effective tangent of the last assembly (with a tangent): K, or
+  /// M / (beta dt^2) + (1 + alpha) (K + gamma / (beta dt) C).
+  Eigen::SparseMatrix<double> effective_tangent(const Increment& increment) const;
+  bool factorize(const Eigen::SparseMatrix<double>& matrix);
+  bool converged(const Increment& increment, const Eigen::VectorXd& dq,
+                 const Eigen::VectorXd& residual) const;
+  void commit(const Increment& increment, const Eigen::VectorXd& dq);
+  void revert();
+  /// -sum_c M r_c a_g,c(t) (equations).
+  Eigen::VectorXd ground_force(double time) const;
+  /// Relative acceleration in equilibrium with the committed state (massive equations).
+  void make_acceleration_consistent();
+  double newmark_gamma() const;
+  double newmark_beta() const;
   // The implementation owns the rest (see transient_analysis.cpp).
   model::Model& model_;
   model::DofMap map_;
@@ -140,9 +210,21 @@ private:
   std::vector<Eigen::VectorXd> influence_;
   std::vector<element::NodeConfiguration> committed_nodes_;
   Eigen::VectorXd committed_full_force_;
-  Eigen::VectorXd static_load_; // held static load (full)
+  Eigen::VectorXd static_load_;  // held static load (full)
+  Eigen::VectorXd static_base_;  // during apply_static_load: the load held before it (full)
+  Eigen::VectorXd static_delta_; // and the load it adds (full)
+  double static_fraction_ = 0.0; // of static_delta_ committed so far
   Eigen::VectorXd velocity_;     // equations
   Eigen::VectorXd acceleration_; // equations
+  Eigen::VectorXd committed_reduced_force_; // T^T f_int of the committed state
+  std::vector<element::NodeConfiguration> trial_nodes_;
+  element::ElementEnergy initial_element_energy_;
+  std::string initial_failure_; // the start could not be evaluated
+  bool acceleration_consistent_ = true;
+  double model_extent_ = 1.0; // mm, for the round-off floor
+  double stiffest_ = 0.0;     // largest entry of the last tangent T^T K T
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
+  std::vector<int> solver_pattern_; // outer and inner indices the solver was analysed for
   double time_ = 0.0;
   TransientEnergy energy_;
   std::vector<FallbackRecord> fallbacks_;
