@@ -212,6 +212,59 @@ Eigen::VectorXd ExplicitAnalysis::reduced_load() const {
   return map_.reduce(static_load_);
 }
 
+StableStepEstimate
+ExplicitAnalysis::estimate_stable_step(const Eigen::SparseMatrix<double>& tangent) const {
+  // w_max^2: largest eigenvalue of M^-1/2 Ks M^-1/2, Ks the symmetric part of the tangent
+  const Eigen::VectorXd inverse_root = mass_.cwiseSqrt().cwiseInverse();
+  const Eigen::SparseMatrix<double> transposed = tangent.transpose();
+  const Eigen::SparseMatrix<double> symmetric = 0.5 * (tangent + transposed);
+  const Eigen::SparseMatrix<double> scaled =
+      inverse_root.asDiagonal() * symmetric * inverse_root.asDiagonal();
+  const PowerIterationResult power = largest_eigenvalue(scaled, settings_.max_power_iterations);
+  StableStepEstimate estimate;
+  estimate.max_frequency = std::sqrt(power.eigenvalue);
+  estimate.gershgorin_bound = std::sqrt(power.gershgorin);
+  estimate.power_iterations = power.iterations;
+  const double w = estimate.max_frequency;
+  if (w > 0.0) {
+    // only the stiffness part, at v_{n+1/2}, lowers the limit (see the header)
+    estimate.damping_ratio = damping_spec_.stiffness_factor * w / 2.0;
+    const double xi = estimate.damping_ratio;
+    estimate.stable_step =
+        settings_.stable_step_safety * (2.0 / w) * (std::sqrt(1.0 + xi * xi) - xi);
+  }
+  return estimate;
+}
+
+ExplicitAnalysis::StabilityCheck ExplicitAnalysis::check_stable_step(std::string& reason) {
+  steps_since_check_ = 0;
+  // the tangent of the trial end state (re-evaluating the same trial state: its forces and
+  // energies stay those of the step)
+  if (!assembler_.assemble(trial_nodes_, true, reason)) {
+    reason = "the tangent for the stability check: " + reason;
+    return StabilityCheck::stop;
+  }
+  const StableStepEstimate current = estimate_stable_step(assembler_.reduced_tangent());
+  // act once the stiffening has used half of the safety margin
+  const double allowance = 1.0 + 0.5 * (1.0 / settings_.stable_step_safety - 1.0);
+  if (!(current.max_frequency > 0.0) || time_step_ <= current.stable_step * allowance)
+    return StabilityCheck::fine;
+  const std::string grown = "the stiffness grew: w_max " + std::to_string(current.max_frequency) +
+                            " rad/s, stable step " + std::to_string(current.stable_step) +
+                            " s < time step " + std::to_string(time_step_) + " s";
+  if (settings_.time_step > 0.0) {
+    if (!settings_.refuse_unstable_step)
+      return StabilityCheck::fine; // the user runs an unstable step on purpose
+    reason = grown + " (a given time_step is not changed; choose a smaller one)";
+    return StabilityCheck::stop;
+  }
+  fallbacks_.push_back(
+      {time_, "time step reduced to " + std::to_string(current.stable_step) + " s", grown});
+  time_step_ = current.stable_step;
+  stable_ = current;
+  return StabilityCheck::reduced;
+}
+
 void ExplicitAnalysis::prepare() {
   if (prepared_)
     return;
@@ -284,18 +337,6 @@ void ExplicitAnalysis::build_masses_and_step() {
         mass_[i];
   }
 
-  // w_max^2: largest eigenvalue of M^-1/2 K0s M^-1/2
-  const Eigen::VectorXd inverse_root = mass_.cwiseSqrt().cwiseInverse();
-  const Eigen::SparseMatrix<double> transposed = tangent.transpose();
-  const Eigen::SparseMatrix<double> symmetric = 0.5 * (tangent + transposed);
-  const Eigen::SparseMatrix<double> scaled =
-      inverse_root.asDiagonal() * symmetric * inverse_root.asDiagonal();
-  const PowerIterationResult power = largest_eigenvalue(scaled, settings_.max_power_iterations);
-  stable_ = {};
-  stable_.max_frequency = std::sqrt(power.eigenvalue);
-  stable_.gershgorin_bound = std::sqrt(power.gershgorin);
-  stable_.power_iterations = power.iterations;
-
   // Damping: C = a0 M_phys (diagonal) + a1 K0 (of the included elements)
   mass_damping_ = damping_spec_.mass_factor * physical_mass_;
   stiffness_damping_.resize(n, n);
@@ -310,18 +351,12 @@ void ExplicitAnalysis::build_masses_and_step() {
       stiffness_damping_ = damping_spec_.stiffness_factor * assembler_.reduced_tangent();
     }
   }
-  const double w = stable_.max_frequency;
-  if (w > 0.0) {
-    // only the stiffness part, at v_{n+1/2}, lowers the limit (see the header)
-    stable_.damping_ratio = damping_spec_.stiffness_factor * w / 2.0;
-    const double xi = stable_.damping_ratio;
-    stable_.stable_step =
-        settings_.stable_step_safety * (2.0 / w) * (std::sqrt(1.0 + xi * xi) - xi);
-  } else {
+
+  stable_ = estimate_stable_step(tangent);
+  if (!(stable_.max_frequency > 0.0))
     throw std::invalid_argument("explicit analysis: the initial tangent has no stiffness (no "
                                 "vibration frequency to set the step)");
-  }
-
+  const double w = stable_.max_frequency;
   time_step_ = settings_.time_step > 0.0 ? settings_.time_step : stable_.stable_step;
   if (settings_.refuse_unstable_step && time_step_ > stable_.stable_step * (1.0 + 1e-12))
     throw std::invalid_argument(
@@ -408,12 +443,30 @@ ExplicitStepReport ExplicitAnalysis::advance(double dt) {
   };
   Stepper stepper;
   Eigen::VectorXd q(displacement_.size()), v(velocity_.size()), a(acceleration_.size());
-  stepper.do_step(system, displacement_, velocity_, acceleration_, q, v, a, time_, dt);
-  if (!evaluated)
-    return stop(dt, reason);
-  if (!q.allFinite() || !v.allFinite() || !a.allFinite())
-    return stop(dt, "the state became non-finite (the step exceeds the stable step of the "
-                    "current stiffness?)");
+  // a step whose end state is too stiff for it is taken again with the reduced step
+  constexpr int max_reductions = 8;
+  for (int attempt = 0;; ++attempt) {
+    stepper.do_step(system, displacement_, velocity_, acceleration_, q, v, a, time_, dt);
+    if (!evaluated)
+      return stop(dt, reason);
+    if (!q.allFinite() || !v.allFinite() || !a.allFinite())
+      return stop(dt, "the state became non-finite (the step exceeds the stable step of the "
+                      "current stiffness?)");
+    if (settings_.stability_check_interval <= 0 ||
+        steps_since_check_ + 1 < settings_.stability_check_interval)
+      break;
+    const StabilityCheck check = check_stable_step(reason);
+    if (check == StabilityCheck::stop)
+      return stop(dt, reason);
+    if (check == StabilityCheck::fine)
+      break;
+    for (const auto& element : model_.elements())
+      element->revert_to_committed();
+    if (attempt + 1 == max_reductions)
+      return stop(dt, "the step was reduced " + std::to_string(max_reductions) +
+                          " times without reaching a stable one");
+    dt = std::min(dt, time_step_);
+  }
 
   // energy increments, trapezoidal with the forces as evaluated
   const Eigen::VectorXd increment = q - displacement_;
@@ -434,6 +487,7 @@ ExplicitStepReport ExplicitAnalysis::advance(double dt) {
   acceleration_ = std::move(a);
   forces_ = std::move(forces);
   time_ += dt;
+  ++steps_since_check_;
   return {true, 1, {}};
 }
 

@@ -555,6 +555,95 @@ private:
   double energy_ = 0.0;
 };
 
+/// A spring in ux that stiffens beyond a gap (contact closing): k1 for |u| <= gap, then k2.
+class StiffeningSpring final : public element::Element {
+public:
+  StiffeningSpring(std::array<int, 2> nodes, double soft, double stiff, double gap)
+      : nodes_(nodes), soft_(soft), stiff_(stiff), gap_(gap) {}
+  std::span<const int> nodes() const override { return nodes_; }
+  bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string&) override {
+    const double u = configuration[1].position.x() - configuration[0].position.x();
+    const double beyond = std::max(std::abs(u) - gap_, 0.0);
+    const double magnitude = soft_ * std::min(std::abs(u), gap_) + stiff_ * beyond;
+    const double f = std::copysign(magnitude, u);
+    const double k = beyond > 0.0 ? stiff_ : soft_;
+    force = Eigen::VectorXd::Zero(12);
+    tangent = Eigen::MatrixXd::Zero(12, 12);
+    force[0] = -f;
+    force[6] = f;
+    tangent(0, 0) = tangent(6, 6) = k;
+    tangent(0, 6) = tangent(6, 0) = -k;
+    const double within = std::min(std::abs(u), gap_);
+    energy_ =
+        0.5 * soft_ * within * within + soft_ * gap_ * beyond + 0.5 * stiff_ * beyond * beyond;
+    return true;
+  }
+  void commit() override {}
+  void revert_to_committed() override {}
+  element::ElementEnergy energy() const override { return {energy_, 0.0}; }
+  void copy_state_from(const Element& other) override { element::copy_element_value(*this, other); }
+
+private:
+  std::array<int, 2> nodes_;
+  double soft_, stiff_, gap_;
+  double energy_ = 0.0;
+};
+
+TEST(ExplicitAnalysis, AStiffeningStructureReducesTheAutomaticStep) {
+  // w = 10 rad/s inside the gap, 30 rad/s beyond it. With safety 0.5 the automatic step is
+  // 0.5 * 2 / 10 = 0.1 s, unstable once the gap closes (w dt = 3); the stability check
+  // retakes the step at 0.5 * 2 / 30.
+  const double mass = 1.0, soft = 100.0, stiff = 900.0, gap = 1.0;
+  const auto make_model = [&]() {
+    auto model = std::make_unique<Model>();
+    model->add_node(Vector3::Zero());
+    model->add_node(Vector3::Zero());
+    model->fix_all(0);
+    for (const Dof dof : {model::uy, model::uz, model::rx, model::ry, model::rz})
+      model->fix(1, dof);
+    model->add_mass(1, {mass, 0.0, 0.0, 0.0, 0.0, 0.0});
+    model->add_element(
+        std::make_unique<StiffeningSpring>(std::array<int, 2>{0, 1}, soft, stiff, gap));
+    return model;
+  };
+  const double v0 = 20.0;
+  // the first peak from energy conservation: 1/2 m v0^2 = 1/2 k1 gap^2 + k1 gap d + 1/2 k2 d^2
+  const double kinetic = 0.5 * mass * v0 * v0;
+  const double excursion =
+      (-soft * gap +
+       std::sqrt(soft * gap * soft * gap - 2.0 * stiff * (0.5 * soft * gap * gap - kinetic))) /
+      stiff;
+  for (const int interval : {0, 1}) {
+    auto model = make_model();
+    ExplicitSettings settings;
+    settings.stability_check_interval = interval;
+    settings.stable_step_safety = 0.5;
+    ExplicitAnalysis analysis(*model, model::DofMap::build(*model, 3), settings);
+    Eigen::VectorXd velocity = Eigen::VectorXd::Zero(model->dof_count());
+    velocity[Model::global_dof(1, model::ux)] = v0;
+    analysis.set_initial_state(model::initial_configuration(*model), velocity);
+    EXPECT_NEAR(analysis.time_step(), 0.5 * 2.0 / 10.0, 1e-12);
+    double largest = 0.0;
+    ExplicitStepReport report{true, 0, {}};
+    while (report.completed && analysis.time() < 3.0 && largest < 1e6) {
+      report = analysis.step();
+      largest = std::max(largest, std::abs(node_value(analysis.displacement(), 1, model::ux)));
+    }
+    if (interval == 0) {
+      EXPECT_TRUE(largest >= 1e6 || !report.completed); // diverges
+      EXPECT_TRUE(analysis.fallbacks().empty());
+      continue;
+    }
+    EXPECT_TRUE(report.completed) << report.failure;
+    EXPECT_GE(analysis.time(), 3.0);
+    ASSERT_EQ(analysis.fallbacks().size(), 1u);
+    EXPECT_NE(analysis.fallbacks()[0].reason.find("stiffness grew"), std::string::npos);
+    EXPECT_NEAR(analysis.time_step(), 0.5 * 2.0 / 30.0, 1e-9);
+    EXPECT_NEAR(largest, gap + excursion, 0.02 * (gap + excursion));
+  }
+}
+
 TEST(ExplicitAnalysis, AnElementRefusingAStateStopsTheRunWithItsReason) {
   Model model;
   model.add_node(Vector3::Zero());

@@ -35,9 +35,11 @@
 // residual, an eigenvalue lies within the residual of rho), capped by the Gershgorin bound
 // max_i sum_j |A_ij| (rigorous). With the damping ratio of that frequency,
 // xi_k = a1 w_max / 2 (the stiffness part of Rayleigh damping), dt_stable = safety *
-// (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state: a structure
-// that stiffens later (contact closing) can outgrow it; divergence then ends in a non-finite state,
-// which stops the run with a reason.
+// (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and estimated
+// again every stability_check_interval steps from the tangent of the step's end state: an
+// automatic step is reduced to the new estimate and the step retaken (fallbacks()), a given
+// one stops the run. Between checks a
+// stiffening that outgrows the step diverges; a non-finite state stops the run with a reason.
 //
 // Energy (relative formulation, Uang & Bertero 1990), trapezoidal over each step with the
 // forces of the equations as they were evaluated: input E_I = -sum int (M_phys r_c a_g,c)^T dq,
@@ -80,6 +82,14 @@ struct ExplicitSettings {
   /// |T^T (f_static - f_int)|_inf <= tolerance * (largest element force + largest load + 1 N).
   double static_tolerance = 1e-6;
   int max_power_iterations = 5000;
+  /// Every this many steps the stable step is estimated again from the tangent of the step's
+  /// end state, before it is committed (a stiffening structure: contact closing, tension
+  /// stiffening); 0: never. When the step exceeds the estimate by half the safety margin
+  /// (dt > stable * (1 + (1/safety - 1)/2)), an automatic step is reduced to the estimate and
+  /// the step retaken (recorded in fallbacks()); a given step stops the run with the reason.
+  /// Costs a tangent assembly and a power iteration per check; 1 for contact problems, whose
+  /// stiffness can jump within a step.
+  int stability_check_interval = 10;
 };
 
 /// The largest record substep not above `stable_step`: record_dt / ceil(record_dt / stable).
@@ -177,6 +187,8 @@ public:
   const TransientEnergy& energy() const { return energy_; }
   /// Why the run stopped (time: start of the step that failed), if it did.
   const std::optional<FallbackRecord>& failure() const { return failure_; }
+  /// The automatic step's reductions after a stability check (time, new step, why).
+  const std::vector<FallbackRecord>& fallbacks() const { return fallbacks_; }
 
 private:
   /// The forces of one evaluation of the equations of motion (equations).
@@ -197,6 +209,12 @@ private:
                 std::string& reason);
   ExplicitStepReport advance(double dt);
   ExplicitStepReport stop(double dt, std::string reason);
+  /// w_max and the stable step for `tangent` with the lumped masses and the damping.
+  StableStepEstimate estimate_stable_step(const Eigen::SparseMatrix<double>& tangent) const;
+  enum class StabilityCheck { fine, reduced, stop };
+  /// The stability check of a step's trial end state (ExplicitSettings::
+  /// stability_check_interval): fine, the automatic step reduced (retake the step), or stop.
+  StabilityCheck check_stable_step(std::string& reason);
 
   model::Model& model_;
   model::DofMap map_;
@@ -232,6 +250,8 @@ private:
   double time_ = 0.0;
   TransientEnergy energy_;
   std::optional<FallbackRecord> failure_;
+  std::vector<FallbackRecord> fallbacks_;
+  int steps_since_check_ = 0;
 };
 
 } // namespace brb::analysis
