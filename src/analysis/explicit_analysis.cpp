@@ -38,8 +38,9 @@ bool is_translation(int full_dof) {
 }
 
 /// Largest eigenvalue of the symmetric matrix `a` by power iteration: the Rayleigh quotient
-/// plus its residual norm (an eigenvalue lies within |a x - rho x| of rho, Parlett, The
-/// Symmetric Eigenvalue Problem, thm. 4.5.1), capped by the Gershgorin bound.
+/// plus its residual norm (for a unit x some eigenvalue lies within |a x - rho x| of rho:
+/// Weinstein's bound, Parlett, The Symmetric Eigenvalue Problem, ch. 4), capped by the
+/// Gershgorin bound. The quotient alone approaches the largest eigenvalue from below.
 struct PowerIterationResult {
   double eigenvalue = 0.0;
   double gershgorin = 0.0;

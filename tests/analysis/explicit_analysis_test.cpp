@@ -115,7 +115,7 @@ TEST(ExplicitAnalysis, FreeVibrationFollowsTheExactCentralDifferenceRecurrence) 
   analysis.set_initial_state(nodes, Eigen::VectorXd::Zero(model->dof_count()));
 
   // Central difference on u'' + w^2 u = 0 from (u0, 0): u_n = u0 cos(n Omega dt) exactly,
-  // with cos(Omega dt) = 1 - (w dt)^2 / 2 (Hughes, The Finite Element Method, sec. 9.1).
+  // with cos(Omega dt) = 1 - (w dt)^2 / 2 (Hughes, The Finite Element Method, ch. 9).
   const double omega_dt = std::acos(1.0 - 0.5 * (w * dt) * (w * dt));
   // the method's period elongation: Omega / w = 1 - (w dt)^2 / 24 + O((w dt)^4)
   EXPECT_NEAR(omega_dt / (w * dt), 1.0 + 0.01 / 24.0, 1e-5);
@@ -254,7 +254,7 @@ TEST(ExplicitAnalysis, StableStepOfAnUndampedOscillator) {
 TEST(ExplicitAnalysis, StableStepOfADampedOscillator) {
   // Stiffness-proportional damping, evaluated at v_{n+1/2}: stable for
   // dt <= (2 / w)(sqrt(1 + xi^2) - xi) (Belytschko, Liu, Moran, Nonlinear Finite Elements,
-  // sec. 6.3). Mass-proportional damping, taken at v_{n+1} (diagonal), keeps 2 / w.
+  // ch. 6). Mass-proportional damping, taken at v_{n+1} (diagonal), keeps 2 / w.
   const double mass = 1.0, stiffness = 100.0; // w = 10 rad/s
   const double w = 10.0;
   const double xi = 0.2;
@@ -517,6 +517,106 @@ TEST(ExplicitAnalysis, MassScaledRotationRunsAtTheTranslationalStep) {
   EXPECT_NEAR(measured, expected, 2e-3 * expected);
   EXPECT_LT(largest, 1.05 * v0 / scaled_frequency); // bounded: no growth
   EXPECT_LT(std::abs(run.energy().absolute_error()), 1e-2 * run.energy().static_work);
+}
+
+TEST(ExplicitAnalysis, LargeRotationsOfAMassScaledCantileverConserveEnergy) {
+  // The cantilever above swung to a tip deflection of about L/6 (rotations of 0.25 rad):
+  // the co-rotational beam is geometrically nonlinear and the spins accumulate on the
+  // nodal triads. Undamped and unloaded, kinetic + stored energy keeps its initial value up
+  // to the method's truncation, second order in dt (the trapezoidal work of the nonlinear
+  // internal force and the term dt^2/8 a^T M a): halving the step divides the error by ~4.
+  const double length = 3000.0, mass = 5.0;
+  section::ElasticSectionProperties properties;
+  properties.axial_stiffness = 2.0e9;
+  properties.bending_stiffness_y = 2.0e13;
+  properties.bending_stiffness_z = 2.0e13;
+  properties.torsional_stiffness = 1.0e13;
+  const double lateral = std::sqrt(3.0 * 2.0e13 / (mass * length * length * length));
+  struct Run {
+    double deflection = 0.0, rotation = 0.0, energy_error = 0.0; ///< largest; error / initial
+    std::size_t fallbacks = 0;
+  };
+  const auto run = [&](double time_step) {
+    Model model;
+    test::add_elastic_beam(model, Vector3::Zero(), length, 1, properties);
+    model.fix_all(0);
+    model.add_mass(1, {mass, 0.0, mass, 0.0, 0.0, 0.0});
+    ExplicitSettings settings;
+    settings.time_step = time_step; // 0: automatic
+    ExplicitAnalysis analysis(model, model::DofMap::build(model, 2), settings);
+    Eigen::VectorXd velocity = Eigen::VectorXd::Zero(model.dof_count());
+    velocity[Model::global_dof(1, model::uz)] = 500.0 * lateral; // amplitude ~ 500 mm
+    analysis.set_initial_state(model::initial_configuration(model), velocity);
+    analysis.prepare();
+    const double initial = analysis.energy().static_work; // the initial kinetic energy
+    EXPECT_NEAR(initial, 0.5 * mass * velocity.squaredNorm(), 1e-9 * initial);
+    Run result;
+    while (analysis.time() < 3.0 * 2.0 * kPi / lateral) {
+      if (!analysis.step().completed)
+        return Run{0.0, 0.0, 1.0, 0};
+      const Eigen::VectorXd u = analysis.displacement();
+      result.deflection = std::max(result.deflection, std::abs(node_value(u, 1, model::uz)));
+      result.rotation = std::max(result.rotation, std::abs(node_value(u, 1, model::ry)));
+      result.energy_error =
+          std::max(result.energy_error, std::abs(analysis.energy().absolute_error()) / initial);
+    }
+    result.fallbacks = analysis.fallbacks().size();
+    return result;
+  };
+  const Run automatic = run(0.0);
+  const double stable = 0.9 * 2.0 / std::sqrt(properties.axial_stiffness / (length * mass));
+  const Run halved = run(0.5 * stable);
+  EXPECT_GT(automatic.deflection, length / 8.0); // large: the nonlinearity matters
+  EXPECT_GT(automatic.rotation, 0.2);
+  EXPECT_LT(automatic.energy_error, 3e-2);
+  EXPECT_LT(halved.energy_error, 0.35 * automatic.energy_error); // second order
+  EXPECT_EQ(automatic.fallbacks, 0u); // the step stayed stable (checked every 10 steps)
+}
+
+TEST(ExplicitAnalysis, StiffnessDampingOfTheIncludedElementsOnly) {
+  // Two parallel springs on an SDOF, k_a included in the stiffness-proportional damping,
+  // k_b not: C = a1 k_a, xi = a1 k_a / (2 m w) with w = sqrt((k_a + k_b) / m). The free
+  // vibration is the exact damped one (Chopra, sec. 2.2); checked over 5 periods at
+  // w dt = 0.02 (the first-order lag of the damping velocity is then negligible).
+  const double mass = 1.0, k_a = 300.0, k_b = 100.0, a1 = 0.004;
+  Model model;
+  model.add_node(Vector3::Zero());
+  model.add_node(Vector3::Zero());
+  model.fix_all(0);
+  for (const Dof dof : {model::uy, model::uz, model::rx, model::ry, model::rz})
+    model.fix(1, dof);
+  model.add_mass(1, {mass, 0.0, 0.0, 0.0, 0.0, 0.0});
+  for (const double k : {k_a, k_b}) {
+    model.add_element(std::make_unique<element::ZeroLengthSpring>(
+        std::array<int, 2>{0, 1}, Vector3::Zero(), Vector3::Zero(),
+        element::SpringStiffness{k, 0.0, 0.0, 0.0, 0.0, 0.0}));
+  }
+  const double w = std::sqrt((k_a + k_b) / mass);
+  const double xi = a1 * k_a / (2.0 * mass * w);
+  ExplicitSettings settings;
+  settings.time_step = 0.02 / w;
+  ExplicitAnalysis analysis(model, model::DofMap::build(model, 3), settings);
+  DampingSpec damping;
+  damping.stiffness_factor = a1;
+  damping.include_in_stiffness_damping = {true, false};
+  analysis.set_damping(damping);
+  auto nodes = model::initial_configuration(model);
+  nodes[1].position.x() += 1.0;
+  analysis.set_initial_state(nodes, Eigen::VectorXd::Zero(model.dof_count()));
+  // the energy after 5 periods against the exact damped free vibration
+  const double periods = 5.0;
+  ASSERT_TRUE(analysis.run_to(periods * 2.0 * kPi / w).completed);
+  const double energy = analysis.energy().kinetic + analysis.energy().stored;
+  const auto exact_energy = [&](double damping_ratio) {
+    ExactOscillator exact{mass, 2.0 * damping_ratio * mass * w, k_a + k_b, 1.0, 0.0};
+    exact.advance(0.0, 0.0, analysis.time());
+    return 0.5 * (k_a + k_b) * exact.u * exact.u + 0.5 * mass * exact.v * exact.v;
+  };
+  const double expected = exact_energy(xi);
+  EXPECT_NEAR(energy, expected, 2e-3 * expected);
+  // with the damping of both springs (xi 4/3 as large) it would be clearly less
+  EXPECT_GT(std::abs(energy - exact_energy(4.0 / 3.0 * xi)), 0.2 * expected);
+  EXPECT_NEAR(analysis.energy().absolute_error(), 0.0, 1e-3 * 0.5 * (k_a + k_b));
 }
 
 // --- failures -----------------------------------------------------------------------------

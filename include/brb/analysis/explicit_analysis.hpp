@@ -5,7 +5,7 @@
 //
 // Integrator. boost::numeric::odeint::velocity_verlet on the second-order system
 // (displacements and velocities of the equations), which is the central-difference method
-// in its velocity form (Hughes, The Finite Element Method, sec. 9.1.3; Belytschko, Liu,
+// in its velocity form (Hughes, The Finite Element Method, ch. 9; Belytschko, Liu,
 // Moran, Nonlinear Finite Elements, Box 6.1):
 //   q_{n+1} = q_n + dt v_n + dt^2/2 a_n,   a_{n+1} = M^-1 f(q_{n+1}, v_{n+1/2}, t_{n+1}),
 //   v_{n+1} = v_n + dt/2 (a_n + a_{n+1}).
@@ -14,7 +14,7 @@
 // the v_n odeint hands to the system (with v_n the stable step of a damped oscillator
 // shrinks: xi = 0.2 gives 1.23/w instead of 1.64/w). It is first-order accurate in the
 // damping force and stable for dt <= (2/w)(sqrt(1 + xi_k^2) - xi_k), xi_k = a1 w / 2
-// (Belytschko et al., sec. 6.3). The mass part is diagonal, so it is taken at
+// (Belytschko et al., ch. 6). The mass part is diagonal, so it is taken at
 // v_{n+1} = v_{n+1/2} + dt/2 a_{n+1} and solved per equation,
 //   (m_i + a0 m_phys,i dt/2) a_i = f_i - (C_k v_{n+1/2})_i - a0 m_phys,i v_{n+1/2,i}:
 // second-order and without effect on the limit 2/w (both limits are checked by the tests).
@@ -35,11 +35,14 @@
 // residual, an eigenvalue lies within the residual of rho), capped by the Gershgorin bound
 // max_i sum_j |A_ij| (rigorous). With the damping ratio of that frequency,
 // xi_k = a1 w_max / 2 (the stiffness part of Rayleigh damping), dt_stable = safety *
-// (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and estimated
-// again every stability_check_interval steps from the tangent of the step's end state: an
-// automatic step is reduced to the new estimate and the step retaken (fallbacks()), a given
-// one stops the run. Between checks a
-// stiffening that outgrows the step diverges; a non-finite state stops the run with a reason.
+// (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and
+// estimated again every stability_check_interval steps from the tangent of the step's end
+// state: an automatic step is reduced to the new estimate and the step retaken
+// (fallbacks()), a given one stops the run. Between checks a stiffening that outgrows the
+// step diverges; a non-finite state stops the run with a reason.
+//
+// Ground input uses the physical masses: a scaled (massless) equation carries no ground
+// inertia force, its added mass only slows it down.
 //
 // Energy (relative formulation, Uang & Bertero 1990), trapezoidal over each step with the
 // forces of the equations as they were evaluated: input E_I = -sum int (M_phys r_c a_g,c)^T dq,
@@ -184,6 +187,7 @@ public:
   /// Internal forces of the committed state on every full DOF (reactions at supports).
   const Eigen::VectorXd& internal_force() const { return committed_full_force_; }
   const std::vector<element::NodeConfiguration>& nodes() const { return committed_nodes_; }
+  /// Energies of the committed state (zero until prepare()).
   const TransientEnergy& energy() const { return energy_; }
   /// Why the run stopped (time: start of the step that failed), if it did.
   const std::optional<FallbackRecord>& failure() const { return failure_; }
