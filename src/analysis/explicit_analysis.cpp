@@ -189,6 +189,8 @@ void ExplicitAnalysis::initialise_static(std::span<const element::NodeConfigurat
   const Eigen::VectorXd residual = map_.reduce(static_load_) - assembler_.reduced_force();
   const double scale = assembler_.force_scale() + static_load_.lpNorm<Eigen::Infinity>() + 1.0;
   const double imbalance = residual.size() > 0 ? residual.lpNorm<Eigen::Infinity>() : 0.0;
+  for (const auto& element : model_.elements())
+    element->revert_to_committed();
   if (imbalance > settings_.static_tolerance * scale) {
     Eigen::Index worst = 0;
     residual.cwiseAbs().maxCoeff(&worst);
