@@ -14,6 +14,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -638,6 +639,40 @@ TEST_F(FrameInputTest, AnInvalidBraceFileIsReportedWithTheBraceReadersMessage) {
     EXPECT_NE(message.find((scratch_.path() / "braces/bad.json").string() + ": /endz: unknown key"),
               std::string::npos)
         << message;
+  }
+}
+
+/// The example buildings of frames/ (frames/README.md) load with the reader; the counts are
+/// compared with the file read as plain JSON.
+TEST(FrameExamples, EveryExampleBuildingLoads) {
+  const std::filesystem::path frames = std::filesystem::path(BRB_SOURCE_DIR) / "frames";
+  for (const auto& [name, dimension] : {std::pair{"brbf3", model::FrameDimension::planar},
+                                        std::pair{"brbf9", model::FrameDimension::planar},
+                                        std::pair{"brbf4_3d", model::FrameDimension::spatial}}) {
+    SCOPED_TRACE(name);
+    const auto file = frames / name / "model.json";
+    const model::FrameSpec spec = read_frame(file);
+    const json document = json::parse(testing::read_file(file), nullptr, true, true);
+    EXPECT_EQ(spec.dimension, dimension);
+    EXPECT_EQ(spec.nodes.size(), document["nodes"].size());
+    EXPECT_EQ(spec.stories.size(), document["stories"].size());
+    EXPECT_EQ(spec.floors.size(), document["floors"].size());
+    ASSERT_EQ(spec.elements.size(), document["elements"].size());
+    std::size_t braces = 0;
+    for (std::size_t index = 0; index < spec.elements.size(); ++index) {
+      const std::string type = document["elements"][index]["type"];
+      const auto* brace = std::get_if<model::BraceElementSpec>(&spec.elements[index].kind);
+      EXPECT_EQ(brace != nullptr, type == "brb") << "element " << spec.elements[index].id;
+      if (brace) {
+        ++braces;
+        EXPECT_EQ(brace->fidelity, model::BraceFidelity::automatic);
+        EXPECT_TRUE(std::filesystem::exists(brace->source_file)) << brace->source_file;
+        EXPECT_NEAR(brace->brace.total_length(), spec.element_length(spec.elements[index]),
+                    kBraceLengthTolerance);
+      }
+    }
+    EXPECT_GE(braces, 2 * spec.stories.size()); // two braces per braced bay and storey
+    EXPECT_EQ(spec.ground_directions.size(), document["ground_motion"]["directions"].size());
   }
 }
 
