@@ -16,6 +16,10 @@ Json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,
   summary["scale"] = description.scale;
   summary["integrator"] = description.integrator;
   summary["dt"] = description.dt;
+  if (result.explicit_time_step > 0.0) {
+    summary["explicit"] = Json{{"time_step", result.explicit_time_step},
+                               {"added_mass_fraction", result.added_mass_fraction}};
+  }
   summary["duration"] = result.duration;
   summary["end_time"] = result.end_time;
   summary["steps"] = result.steps;

@@ -1,10 +1,12 @@
 #include "brb/frame/frame_run.hpp"
 
+#include "brb/analysis/explicit_analysis.hpp"
 #include "brb/analysis/modal_analysis.hpp"
 #include "brb/model/dof_map.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +16,8 @@ namespace brb::frame {
 namespace {
 
 constexpr double kStandardGravity = 9806.65; // mm/s^2
+/// Largest translational mass the explicit solver's mass scaling may add (fraction).
+constexpr double kExplicitAddedMassFraction = 0.05;
 
 using analysis::GroundAcceleration;
 using model::kDofPerNode;
@@ -44,6 +48,31 @@ public:
 
 private:
   analysis::TransientAnalysis& analysis_;
+};
+
+/// The explicit solver: one call advances to the next output instant through as many
+/// stable steps as needed.
+class ExplicitSolver final : public DynamicSolver {
+public:
+  explicit ExplicitSolver(analysis::ExplicitAnalysis& analysis) : analysis_(analysis) {}
+  analysis::TransientStepReport step(double dt) override {
+    const analysis::ExplicitStepReport run = analysis_.run_to(analysis_.time() + dt);
+    analysis::TransientStepReport report;
+    report.converged = run.completed;
+    report.substeps = run.steps;
+    report.failure = run.failure;
+    return report;
+  }
+  Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
+  Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
+  const Eigen::VectorXd& internal_force() const override { return analysis_.internal_force(); }
+  const analysis::TransientEnergy& energy() const override { return analysis_.energy(); }
+  const std::vector<analysis::FallbackRecord>& fallbacks() const override {
+    return analysis_.fallbacks();
+  }
+
+private:
+  analysis::ExplicitAnalysis& analysis_;
 };
 
 /// Follows what the recorders and the summary need, step by step.
@@ -253,6 +282,40 @@ analysis::DampingSpec damping_spec(const FrameModel& frame, const FrameRunOption
   return spec;
 }
 
+/// The explicit step that keeps the translational mass added by selective mass scaling
+/// below `fraction` of the model's translational mass. ExplicitAnalysis gives each massless
+/// equation m_i = R_i (dt^2 + a1 dt), R_i the row sum of |K0|, a1 the stiffness part of the
+/// damping: the step solves dt^2 + a1 dt = fraction M / sum R_i over the massless
+/// translations. (The added mass of a massless floor-level DOF, a beam's mid-span node, joins
+/// the storey's inertia and slows the frame down.)
+double explicit_step_for_mass_scaling(analysis::TransientAnalysis& analysis, double fraction,
+                                      double stiffness_damping) {
+  const Eigen::SparseMatrix<double> tangent = analysis.tangent();
+  const Eigen::SparseMatrix<double>& mass = analysis.mass();
+  const model::DofMap& map = analysis.dof_map();
+  Eigen::VectorXd row_sum = Eigen::VectorXd::Zero(tangent.rows());
+  for (int column = 0; column < tangent.outerSize(); ++column) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(tangent, column); it; ++it)
+      row_sum[it.row()] += std::abs(it.value());
+  }
+  double translational_mass = 0.0, massless_stiffness = 0.0;
+  for (int dof = 0; dof < map.full_dof_count(); ++dof) {
+    const int equation = map.independent_equation(dof);
+    if (equation < 0 || dof % kDofPerNode >= 3)
+      continue;
+    const double m = mass.coeff(equation, equation);
+    if (m > 0.0)
+      translational_mass += m;
+    else
+      massless_stiffness += row_sum[equation];
+  }
+  if (massless_stiffness == 0.0)
+    return std::numeric_limits<double>::infinity();
+  const double target = fraction * translational_mass / massless_stiffness;
+  return 0.5 * (-stiffness_damping +
+                std::sqrt(stiffness_damping * stiffness_damping + 4.0 * target));
+}
+
 } // namespace
 
 FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAcceleration>& components,
@@ -292,14 +355,56 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
                                          options.damping.modal_modes, 3}));
   for (const analysis::Mode& mode : modes)
     result.periods.push_back(mode.period);
-  analysis.set_damping(damping_spec(frame, options, modes));
+  const analysis::DampingSpec damping = damping_spec(frame, options, modes);
+  std::vector<GroundAcceleration> ground;
   for (std::size_t c = 0; c < components.size(); ++c) {
-    GroundAcceleration component = components[c];
-    component.direction = options.directions[c];
-    analysis.add_ground_acceleration(std::move(component));
+    ground.push_back(components[c]);
+    ground.back().direction = options.directions[c];
   }
 
-  ImplicitSolver solver(analysis);
+  // The implicit solver carries on from its gravity state; the explicit one starts from it
+  // (the elements hold the committed gravity state) with the gravity load held.
+  std::unique_ptr<analysis::ExplicitAnalysis> explicit_analysis;
+  std::unique_ptr<DynamicSolver> solver;
+  if (options.integrator == Integrator::explicit_central_difference) {
+    if (!damping.modal_ratios.empty())
+      throw std::invalid_argument("modal damping is not available with the explicit integrator: "
+                                  "use Rayleigh damping");
+    // The step: a substep of the output step, short enough that mass scaling adds at most
+    // kExplicitAddedMassFraction of the mass, and stable (the solver refuses an unstable one).
+    analysis::ExplicitSettings settings;
+    settings.time_step = analysis::record_substep(
+        dt, explicit_step_for_mass_scaling(analysis, kExplicitAddedMassFraction,
+                                           damping.stiffness_factor));
+    const auto make_explicit = [&](const analysis::ExplicitSettings& explicit_settings) {
+      auto made = std::make_unique<analysis::ExplicitAnalysis>(
+          *frame.model, model::DofMap::build(*frame.model, frame.dimension), explicit_settings);
+      made->initialise_static(analysis.nodes(), frame.gravity_load);
+      made->set_damping(damping);
+      for (const GroundAcceleration& component : ground)
+        made->add_ground_acceleration(component);
+      return made;
+    };
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      analysis::ExplicitSettings probe = settings;
+      probe.refuse_unstable_step = false;
+      const double stable = make_explicit(probe)->stable_time_step();
+      if (settings.time_step <= stable)
+        break;
+      settings.time_step = analysis::record_substep(dt, stable);
+    }
+    explicit_analysis = make_explicit(settings);
+    explicit_analysis->prepare();
+    result.explicit_time_step = explicit_analysis->time_step();
+    result.added_mass_fraction = explicit_analysis->mass_scaling().translational_fraction();
+    solver = std::make_unique<ExplicitSolver>(*explicit_analysis);
+  } else {
+    analysis.set_damping(damping);
+    for (GroundAcceleration& component : ground)
+      analysis.add_ground_acceleration(std::move(component));
+    solver = std::make_unique<ImplicitSolver>(analysis);
+  }
+
   Recorder recorder(frame, options, result);
   const auto ground_at = [&](double time) {
     Eigen::Vector3d ground = Eigen::Vector3d::Zero();
@@ -307,13 +412,13 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
       ground += options.directions[c] * components[c].at(time);
     return ground;
   };
-  recorder.observe(0.0, solver, ground_at(0.0));
+  recorder.observe(0.0, *solver, ground_at(0.0));
 
   const auto step_count = static_cast<long>(std::ceil(result.duration / dt - 1e-9));
   result.converged = true;
   for (long n = 1; n <= step_count; ++n) {
     const double target = std::min(static_cast<double>(n) * dt, result.duration);
-    const analysis::TransientStepReport report = solver.step(target - result.end_time);
+    const analysis::TransientStepReport report = solver->step(target - result.end_time);
     if (!report.converged) {
       result.converged = false;
       std::ostringstream reason;
@@ -324,7 +429,7 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
     }
     result.end_time = target;
     ++result.steps;
-    const double drift = recorder.observe(target, solver, ground_at(target));
+    const double drift = recorder.observe(target, *solver, ground_at(target));
     if (drift > options.drift_limit) {
       result.collapsed = true;
       std::ostringstream reason;
@@ -336,8 +441,8 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
   }
   if (result.stop_reason.empty())
     result.stop_reason = "completed";
-  result.energy = solver.energy();
-  result.fallbacks = solver.fallbacks();
+  result.energy = solver->energy();
+  result.fallbacks = solver->fallbacks();
   result.energy_balance_error =
       std::abs(result.energy.absolute_error()) / std::max(std::abs(result.energy.input), 1e-30);
   return result;

@@ -23,17 +23,20 @@
 // diaphragm whose slaves carry mass couples the master's translations to its rotation) is
 // refused: lump the floor's mass and rotational inertia at the diaphragm master placed at
 // the centre of mass, where T^T M T is diagonal. Equations without mass (rotations of frame
-// nodes, typically) get a selectively scaled mass m_i = |K0_ii| dt_target^2 (K0: initial
-// tangent): alone, that equation vibrates at w_i dt_target = 1, half the central-difference
-// limit of 2, which leaves room for its coupling to neighbouring equations (measured by the
-// power iteration below, which sets the step). The added mass is reported (mass_scaling()).
+// nodes, typically) get a selectively scaled mass m_i = R_i (dt_target^2 + a1 dt_target),
+// R_i = sum_j |K0_ij| (K0: initial tangent, a1: the stiffness part of Rayleigh damping): the
+// Gershgorin bound of that equation's row of M^-1 K0 is then w^2 <= 1 / (dt^2 + a1 dt), for
+// which the damped central-difference limit (2 / w)(sqrt(1 + xi^2) - xi), xi = a1 w / 2, is
+// 2 dt_target: twice the step, coupling included. (With stiffness damping, a mass of
+// R_i dt^2 alone would make the limit shrink like dt^2 / a1 as the step is refined.) The added mass is reported (mass_scaling()).
 // dt_target is the user's time step, or when automatic safety * 2 / max_i sqrt(|K0_ii| / m_i)
 // over the equations with mass.
 //
 // Stable step. w_max^2 is the largest eigenvalue of M^-1/2 K0 M^-1/2 (K0 symmetrised, scaled
 // masses included), by power iteration: rho + |A x - rho x| (the Rayleigh quotient plus its
 // residual, an eigenvalue lies within the residual of rho), capped by the Gershgorin bound
-// max_i sum_j |A_ij| (rigorous). With the damping ratio of that frequency,
+// max_i sum_j |A_ij| and by that of M^-1 K0, max_i R_i / m_i (both rigorous; the second is
+// tight for scaled equations, where the power iteration converges slowly). With the damping ratio of that frequency,
 // xi_k = a1 w_max / 2 (the stiffness part of Rayleigh damping), dt_stable = safety *
 // (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and
 // estimated again every stability_check_interval steps from the tangent of the step's end

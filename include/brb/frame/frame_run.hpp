@@ -76,6 +76,8 @@ struct FrameRunResult {
   double duration = 0.0;  ///< s asked (record + free vibration)
   int steps = 0;
   std::vector<double> periods; ///< s, of the gravity state
+  double explicit_time_step = 0.0;  ///< s, the explicit solver's stable step (0: implicit)
+  double added_mass_fraction = 0.0; ///< explicit: mass added by selective mass scaling
   std::vector<double> max_drift;      ///< per story, peak |drift ratio|
   std::vector<double> residual_drift; ///< per story, at the end
   std::vector<double> peak_floor_acceleration; ///< per floor, absolute, g
