@@ -132,6 +132,10 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
   frame->add_option("--duration", command.duration,
                     "Analyse only the first S seconds of the record")
       ->type_name("S");
+  frame->add_option("--braces", command.braces,
+                    "Build every brace as: elastic (an elastic truss of its axial stiffness), "
+                    "truss, full or auto, instead of the fidelity the model file gives")
+      ->type_name("FIDELITY");
   frame->add_option("--out", command.output_directory,
                     "Output directory (created if missing; its parent must exist)")
       ->type_name("DIR")
@@ -168,8 +172,25 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
   }
   if (!(options.dt > 0.0))
     options.dt = motion.dt;
+  frame::BraceOverride braces = frame::BraceOverride::none;
+  if (command.braces) {
+    const std::string& name = *command.braces;
+    if (name == "elastic")
+      braces = frame::BraceOverride::elastic;
+    else if (name == "truss")
+      braces = frame::BraceOverride::truss;
+    else if (name == "full")
+      braces = frame::BraceOverride::full;
+    else if (name == "auto")
+      braces = frame::BraceOverride::automatic;
+    else
+      throw io::InputError("command line", "--braces",
+                           "must be elastic, truss, full or auto (got \"" + name + "\")");
+  }
   check_output_directory(command.output_directory);
-  frame::FrameModel frame = frame::build_frame(spec, command.model.string());
+  frame::FrameModel frame = frame::build_frame(spec, command.model.string(), braces);
+  if (braces == frame::BraceOverride::elastic)
+    options.recorders.braces.clear();
   if (spec.recorders.all_braces) {
     for (const frame::BraceReference& brace : frame.braces)
       options.recorders.braces.push_back(brace.id);
@@ -192,9 +213,12 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
          << " under " << command.motion.filename().string() << " x " << command.scale << "\n";
   if (!result.periods.empty())
     report << "  T1 = " << std::setprecision(4) << result.periods.front() << " s\n";
-  report << "  " << result.stop_reason << " at t = " << result.end_time << " of "
-         << result.duration << " s (" << result.steps << " steps, " << result.fallbacks.size()
-         << " fallbacks)\n";
+  report << "  " << (result.stop_reason == "completed" ? "completed" : "stopped") << " at t = "
+         << result.end_time << " of " << result.duration << " s (" << result.steps << " steps, "
+         << result.fallbacks.size() << " fallbacks)";
+  if (result.stop_reason != "completed")
+    report << ": " << result.stop_reason;
+  report << "\n";
   for (std::size_t s = 0; s < frame.stories.size(); ++s) {
     report << "  story " << frame.stories[s].name << ": peak drift " << std::setprecision(4)
            << 100.0 * result.max_drift[s] << " %, residual " << 100.0 * result.residual_drift[s]

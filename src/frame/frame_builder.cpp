@@ -43,7 +43,8 @@ element::BeamGeometry beam_geometry(model::BeamGeometry geometry) {
 
 class Builder {
 public:
-  Builder(const model::FrameSpec& spec, const std::string& source) : spec_(spec), source_(source) {}
+  Builder(const model::FrameSpec& spec, const std::string& source, BraceOverride braces)
+      : spec_(spec), source_(source), braces_(braces) {}
 
   FrameModel build() {
     frame_.title = spec_.title;
@@ -185,7 +186,24 @@ private:
     BraceReference reference;
     reference.id = element.id;
     model::Fidelity fidelity = model::Fidelity::full;
-    switch (brace.fidelity) {
+    model::BraceFidelity asked = brace.fidelity;
+    switch (braces_) {
+    case BraceOverride::none:
+      break;
+    case BraceOverride::elastic:
+      add_elastic_brace(element, brace);
+      return;
+    case BraceOverride::truss:
+      asked = model::BraceFidelity::truss;
+      break;
+    case BraceOverride::full:
+      asked = model::BraceFidelity::full;
+      break;
+    case BraceOverride::automatic:
+      asked = model::BraceFidelity::automatic;
+      break;
+    }
+    switch (asked) {
     case model::BraceFidelity::truss:
       fidelity = model::Fidelity::truss;
       break;
@@ -224,6 +242,21 @@ private:
     frame_.braces.push_back(reference);
   }
 
+  /// An elastic truss of the brace's series axial stiffness K = 1 / sum L_i / (E A_i).
+  void add_elastic_brace(const model::FrameElementSpec& element,
+                         const model::BraceElementSpec& brace) {
+    const auto [start, end] = nodes(element);
+    const element::BraceTrussParameters truss = model::truss_parameters(brace.brace);
+    const element::BraceTruss reference({start, end}, position(start), position(end), truss);
+    element::TrussSpec built;
+    built.nodes = {start, end};
+    built.area = truss.core_area;
+    built.material = element::ElasticLawParameters{reference.elastic_stiffness() *
+                                                   (position(end) - position(start)).norm() /
+                                                   truss.core_area};
+    place(element, element::make_truss(built, position(start), position(end)), true);
+  }
+
   void gravity() {
     frame_.gravity_load = Eigen::VectorXd::Zero(frame_.model->dof_count());
     if (!spec_.gravity)
@@ -242,14 +275,16 @@ private:
 
   const model::FrameSpec& spec_;
   const std::string& source_;
+  BraceOverride braces_;
   FrameModel frame_;
   std::unordered_map<int, int> index_;
 };
 
 } // namespace
 
-FrameModel build_frame(const model::FrameSpec& spec, const std::string& source) {
-  return Builder(spec, source).build();
+FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
+                       BraceOverride braces) {
+  return Builder(spec, source, braces).build();
 }
 
 } // namespace brb::frame

@@ -10,8 +10,14 @@
 
 namespace brb::frame {
 
+/// How every brace of the model is built, overriding the file's fidelities: for comparisons
+/// (the benchmark) and quick studies. `elastic`: an elastic truss of the brace's series
+/// axial stiffness (a frame that never yields in its braces).
+enum class BraceOverride { none, elastic, truss, full, automatic };
+
 /// `source` names the model file in errors: an element the element layer rejects raises an
 /// io::InputError at "/elements/<index>" with the element's message.
-FrameModel build_frame(const model::FrameSpec& spec, const std::string& source);
+FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
+                       BraceOverride braces = BraceOverride::none);
 
 } // namespace brb::frame
