@@ -39,13 +39,7 @@ void frame_under_record(benchmark::State& bench, const char* building,
       motion.acceleration.begin() +
           std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(motion.acceleration.size()),
                                    std::lround(kWindow / motion.dt) + 1));
-  frame::FrameRunOptions options;
-  options.dt = spec.analysis.dt.value_or(0.0);
-  const auto& rayleigh = std::get<model::RayleighDampingSpec>(*spec.damping);
-  options.damping.mode_i = rayleigh.modes[0];
-  options.damping.mode_j = rayleigh.modes[1];
-  options.damping.ratio_i = rayleigh.ratios[0];
-  options.damping.ratio_j = rayleigh.ratios[1];
+  frame::FrameRunOptions options = frame::run_options_of(spec);
   options.recorders = {false, false, false, false, {}};
   double peak = 0.0, steps = 0.0;
   for (auto _ : bench) {

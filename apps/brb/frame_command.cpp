@@ -47,50 +47,6 @@ analysis::GroundAcceleration component_of(const io::GroundMotion& motion,
   return component;
 }
 
-frame::FrameRunOptions run_options(const model::FrameSpec& spec) {
-  frame::FrameRunOptions options;
-  switch (spec.analysis.integrator) {
-  case model::Integrator::newmark:
-    options.integrator = frame::Integrator::newmark;
-    break;
-  case model::Integrator::hht:
-    options.integrator = frame::Integrator::hht;
-    break;
-  case model::Integrator::explicit_central_difference:
-    options.integrator = frame::Integrator::explicit_central_difference;
-    break;
-  }
-  options.hht_alpha = spec.analysis.alpha;
-  options.dt = spec.analysis.dt.value_or(0.0);
-  options.free_vibration = spec.analysis.free_vibration;
-  options.drift_limit = spec.analysis.drift_limit;
-  if (!spec.damping) {
-    options.damping.kind = frame::DampingOptions::Kind::none;
-  } else if (const auto* rayleigh = std::get_if<model::RayleighDampingSpec>(&*spec.damping)) {
-    options.damping.kind = frame::DampingOptions::Kind::rayleigh;
-    options.damping.mode_i = rayleigh->modes[0];
-    options.damping.mode_j = rayleigh->modes[1];
-    options.damping.ratio_i = rayleigh->ratios[0];
-    options.damping.ratio_j = rayleigh->ratios[1];
-    options.damping.exclude_braces = rayleigh->exclude_braces;
-  } else {
-    const auto& modal = std::get<model::ModalDampingSpec>(*spec.damping);
-    options.damping.kind = frame::DampingOptions::Kind::modal;
-    options.damping.modal_ratio = modal.ratio;
-    options.damping.modal_modes = modal.modes;
-  }
-  options.recorders.drifts = spec.recorders.drifts;
-  options.recorders.floor_accelerations = spec.recorders.floor_accelerations;
-  options.recorders.base_shear = spec.recorders.base_shear;
-  options.recorders.energy = spec.recorders.energy;
-  options.recorders.braces = spec.recorders.brace_ids;
-  options.directions.clear();
-  for (const model::GroundDirection direction : spec.ground_directions)
-    options.directions.push_back(direction == model::GroundDirection::x ? Eigen::Vector3d::UnitX()
-                                                                        : Eigen::Vector3d::UnitY());
-  return options;
-}
-
 std::string integrator_name(frame::Integrator integrator) {
   switch (integrator) {
   case frame::Integrator::newmark:
@@ -156,7 +112,7 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
     throw io::InputError("command line", "--scale", "must be a finite number other than 0");
   if (command.duration && !(*command.duration > 0.0))
     throw io::InputError("command line", "--duration", "must be > 0 s");
-  frame::FrameRunOptions options = run_options(spec);
+  frame::FrameRunOptions options = frame::run_options_of(spec);
   std::vector<analysis::GroundAcceleration> components;
   const io::GroundMotion motion = read_motion(command.motion, command);
   components.push_back(component_of(motion, options.directions.front(), command.duration));

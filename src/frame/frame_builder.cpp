@@ -1,5 +1,7 @@
 #include "brb/frame/frame_builder.hpp"
 
+#include <variant>
+
 #include "brb/element/frame_element_specs.hpp"
 #include "brb/io/input_error.hpp"
 #include "brb/material/parameter_error.hpp"
@@ -7,7 +9,6 @@
 #include "brb/model/brace_model.hpp"
 
 #include <memory>
-#include <type_traits>
 #include <unordered_map>
 
 namespace brb::frame {
@@ -16,30 +17,6 @@ namespace {
 
 using model::Dof;
 using model::kDofPerNode;
-
-element::UniaxialLawParameters law_parameters(const model::UniaxialLawSpec& law) {
-  return std::visit(
-      [](const auto& parameters) -> element::UniaxialLawParameters {
-        using Law = std::decay_t<decltype(parameters)>;
-        if constexpr (std::is_same_v<Law, model::ElasticLaw>)
-          return element::ElasticLawParameters{parameters.youngs_modulus};
-        else
-          return parameters;
-      },
-      law);
-}
-
-element::BeamGeometry beam_geometry(model::BeamGeometry geometry) {
-  switch (geometry) {
-  case model::BeamGeometry::linear:
-    return element::BeamGeometry::linear;
-  case model::BeamGeometry::pdelta:
-    return element::BeamGeometry::pdelta;
-  case model::BeamGeometry::corotational:
-    return element::BeamGeometry::corotational;
-  }
-  return element::BeamGeometry::linear;
-}
 
 class Builder {
 public:
@@ -115,11 +92,9 @@ private:
   void add(const model::FrameElementSpec& element, const model::ElasticBeamSpec& beam) {
     element::ElasticBeamColumnSpec built;
     built.nodes = nodes(element);
-    built.section = {beam.section.youngs_modulus, beam.section.shear_modulus, beam.section.area,
-                     beam.section.inertia_y,      beam.section.inertia_z,
-                     beam.section.torsion_constant};
+    built.section = beam.section;
     built.orientation = beam.orientation;
-    built.geometry = beam_geometry(beam.geometry);
+    built.geometry = beam.geometry;
     place(element,
           element::make_elastic_beam_column(built, position(built.nodes[0]),
                                             position(built.nodes[1])),
@@ -130,7 +105,7 @@ private:
     element::TrussSpec built;
     built.nodes = nodes(element);
     built.area = truss.area;
-    built.material = law_parameters(truss.material.law);
+    built.material = truss.material.law;
     place(element, element::make_truss(built, position(built.nodes[0]), position(built.nodes[1])),
           true);
   }
@@ -140,7 +115,7 @@ private:
     built.nodes = nodes(element);
     for (int dof = 0; dof < kDofPerNode; ++dof) {
       if (spring.dofs[dof])
-        built.dofs[dof] = element::SpringDofSpec{law_parameters(spring.dofs[dof]->law), 1.0, 1.0};
+        built.dofs[dof] = element::SpringDofSpec{spring.dofs[dof]->law, 1.0, 1.0};
     }
     place(element,
           element::make_uniaxial_spring(built, position(built.nodes[0]), position(built.nodes[1])),
@@ -281,6 +256,50 @@ private:
 };
 
 } // namespace
+
+FrameRunOptions run_options_of(const model::FrameSpec& spec) {
+  FrameRunOptions options;
+  switch (spec.analysis.integrator) {
+  case model::Integrator::newmark:
+    options.integrator = Integrator::newmark;
+    break;
+  case model::Integrator::hht:
+    options.integrator = Integrator::hht;
+    break;
+  case model::Integrator::explicit_central_difference:
+    options.integrator = Integrator::explicit_central_difference;
+    break;
+  }
+  options.hht_alpha = spec.analysis.alpha;
+  options.dt = spec.analysis.dt.value_or(0.0);
+  options.free_vibration = spec.analysis.free_vibration;
+  options.drift_limit = spec.analysis.drift_limit;
+  if (!spec.damping) {
+    options.damping.kind = DampingOptions::Kind::none;
+  } else if (const auto* rayleigh = std::get_if<model::RayleighDampingSpec>(&*spec.damping)) {
+    options.damping.kind = DampingOptions::Kind::rayleigh;
+    options.damping.mode_i = rayleigh->modes[0];
+    options.damping.mode_j = rayleigh->modes[1];
+    options.damping.ratio_i = rayleigh->ratios[0];
+    options.damping.ratio_j = rayleigh->ratios[1];
+    options.damping.exclude_braces = rayleigh->exclude_braces;
+  } else {
+    const auto& modal = std::get<model::ModalDampingSpec>(*spec.damping);
+    options.damping.kind = DampingOptions::Kind::modal;
+    options.damping.modal_ratio = modal.ratio;
+    options.damping.modal_modes = modal.modes;
+  }
+  options.recorders.drifts = spec.recorders.drifts;
+  options.recorders.floor_accelerations = spec.recorders.floor_accelerations;
+  options.recorders.base_shear = spec.recorders.base_shear;
+  options.recorders.energy = spec.recorders.energy;
+  options.recorders.braces = spec.recorders.brace_ids;
+  options.directions.clear();
+  for (const model::GroundDirection direction : spec.ground_directions)
+    options.directions.push_back(direction == model::GroundDirection::x ? Eigen::Vector3d::UnitX()
+                                                                        : Eigen::Vector3d::UnitY());
+  return options;
+}
 
 FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
                        BraceOverride braces) {

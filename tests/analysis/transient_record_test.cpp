@@ -10,6 +10,8 @@
 #include "brb/model/dof_map.hpp"
 #include "support/oscillator_models.hpp"
 
+#include "support/shared_records.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,18 +29,6 @@ constexpr double kStep = 0.005; // s
 constexpr double kMass = 2.0;   // tonne
 constexpr double kDampingRatio = 0.05;
 
-std::vector<fs::path> shared_records() {
-  std::vector<fs::path> records;
-  for (const auto& entry : fs::directory_iterator(fs::path(BRB_SHARED_DIR) / "data" / "ground_motions")) {
-    std::string extension = entry.path().extension().string();
-    for (char& c : extension)
-      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".at2")
-      records.push_back(entry.path());
-  }
-  std::sort(records.begin(), records.end());
-  return records;
-}
 
 /// Peak |u| of the Newmark solution and of the exact one over the same instants.
 std::pair<double, double> peaks(const io::GroundMotion& motion, double period) {
@@ -73,7 +63,7 @@ std::pair<double, double> peaks(const io::GroundMotion& motion, double period) {
 }
 
 TEST(TransientRecord, ElasticOscillatorMatchesTheExactSolutionOnEverySharedRecord) {
-  const std::vector<fs::path> records = shared_records();
+  const std::vector<fs::path> records = test::shared_at2_records();
   ASSERT_EQ(records.size(), 10u);
   for (const fs::path& record : records) {
     const io::GroundMotion motion = io::read_peer_at2(record);

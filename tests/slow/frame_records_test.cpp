@@ -9,6 +9,8 @@
 #include "brb/io/frame_input.hpp"
 #include "brb/io/ground_motion.hpp"
 
+#include "support/shared_records.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,19 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> shared_records() {
-  std::vector<fs::path> records;
-  for (const auto& entry :
-       fs::directory_iterator(fs::path(BRB_SHARED_DIR) / "data" / "ground_motions")) {
-    std::string extension = entry.path().extension().string();
-    for (char& c : extension)
-      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension == ".at2")
-      records.push_back(entry.path());
-  }
-  std::sort(records.begin(), records.end());
-  return records;
-}
 
 struct Building {
   model::FrameSpec spec;
@@ -47,14 +36,7 @@ Building example(const std::string& name) {
 }
 
 FrameRunOptions options_of(const model::FrameSpec& spec) {
-  FrameRunOptions options;
-  options.dt = spec.analysis.dt.value_or(0.0);
-  options.drift_limit = spec.analysis.drift_limit;
-  const auto& rayleigh = std::get<model::RayleighDampingSpec>(*spec.damping);
-  options.damping.mode_i = rayleigh.modes[0];
-  options.damping.mode_j = rayleigh.modes[1];
-  options.damping.ratio_i = rayleigh.ratios[0];
-  options.damping.ratio_j = rayleigh.ratios[1];
+  FrameRunOptions options = run_options_of(spec);
   options.recorders = {false, false, false, false, {}};
   return options;
 }
@@ -68,7 +50,7 @@ analysis::GroundAcceleration component(const io::GroundMotion& motion) {
 
 TEST(FrameRecords, ThreeStoreyFrameBalancesItsEnergyUnderEverySharedRecord) {
   const Building building = example("brbf3");
-  for (const fs::path& record : shared_records()) {
+  for (const fs::path& record : test::shared_at2_records()) {
     FrameModel frame = build_frame(building.spec, building.file);
     const io::GroundMotion motion = io::read_peer_at2(record);
     const FrameRunResult result =
@@ -107,8 +89,7 @@ TEST(FrameRecords, ExplicitAndImplicitRoofDriftsAgree) {
   // (with selective mass scaling of the massless DOF, at most 5 % of the mass).
   const Building building = example("brbf3");
   for (const std::string name : {"elCentro.AT2", "RSN77_SFERN_PUL164.AT2"}) {
-    io::GroundMotion motion = io::read_peer_at2(fs::path(BRB_SHARED_DIR) / "data" /
-                                                "ground_motions" / name);
+    io::GroundMotion motion = io::read_peer_at2(test::shared_ground_motions() / name);
     motion.acceleration.resize(static_cast<std::size_t>(std::lround(10.0 / motion.dt)) + 1);
     std::vector<std::vector<double>> roofs;
     for (const Integrator integrator :
@@ -141,7 +122,7 @@ TEST(FrameRecords, ExplicitAndImplicitRoofDriftsAgree) {
 
 TEST(FrameRecords, NineStoreyFrameReportsCollapseUnderEveryScaledRecord) {
   const Building building = example("brbf9");
-  for (const fs::path& record : shared_records()) {
+  for (const fs::path& record : test::shared_at2_records()) {
     const io::GroundMotion motion = io::read_peer_at2(record);
     bool collapse_reached = false;
     double scale = 1.0;

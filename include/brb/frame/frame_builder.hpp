@@ -4,6 +4,7 @@
 #pragma once
 
 #include "brb/frame/frame_model.hpp"
+#include "brb/frame/frame_run.hpp"
 #include "brb/model/frame_spec.hpp"
 
 #include <string>
@@ -19,5 +20,10 @@ enum class BraceOverride { none, elastic, truss, full, automatic };
 /// io::InputError at "/elements/<index>" with the element's message.
 FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
                        BraceOverride braces = BraceOverride::none);
+
+/// The run options a frame file gives (integrator, step, damping, recorders, ground-motion
+/// directions). Brace histories: the ids listed; "all" is resolved against the built frame
+/// by the caller (FrameModel::braces).
+FrameRunOptions run_options_of(const model::FrameSpec& spec);
 
 } // namespace brb::frame

@@ -7,7 +7,9 @@
 #pragma once
 
 #include "brb/element/beam_integration.hpp"
+#include "brb/element/elastic_beam_column.hpp"
 #include "brb/element/element.hpp"
+#include "brb/element/uniaxial_law.hpp"
 #include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_parameters.hpp"
 #include "brb/model/brace_spec.hpp"
@@ -45,26 +47,17 @@ struct NodalMassSpec {
   NodalMass mass{}; ///< tonne (ux, uy, uz), tonne mm^2 (rx, ry, rz)
 };
 
-/// Elastic section properties of an `elastic_beam` (the file's "sections" entries).
-struct ElasticSectionSpec {
-  double youngs_modulus = 0.0;   ///< E (MPa)
-  double shear_modulus = 0.0;    ///< G (MPa)
-  double area = 0.0;             ///< A (mm^2)
-  double inertia_y = 0.0;        ///< Iy = int z^2 dA (mm^4), bending about local y
-  double inertia_z = 0.0;        ///< Iz = int y^2 dA (mm^4), bending about local z
-  double torsion_constant = 0.0; ///< J (mm^4)
-};
+/// Elastic section properties of an `elastic_beam` (the file's "sections" entries): the
+/// element's own property set (E, G, A, Iy, Iz, J).
+using ElasticSectionSpec = element::ElasticBeamProperties;
 
 /// A linear elastic uniaxial law: sigma = E eps (or force = E x deformation in a spring).
-struct ElasticLaw {
-  double youngs_modulus = 0.0; ///< E (MPa; N/mm or N mm/rad in a spring)
-};
+using ElasticLaw = element::ElasticLawParameters;
 
 /// A uniaxial law of a truss or spring (the file's "materials" entries): elastic, the steel
 /// law or the mortar law with the parameters of `brb material --params` files, without lc
 /// (the characteristic length comes from the element that uses the law).
-using UniaxialLawSpec =
-    std::variant<ElasticLaw, material::SteelParameters, material::MortarParameters>;
+using UniaxialLawSpec = element::UniaxialLawParameters;
 
 /// A named material of the file and its law.
 struct NamedLaw {
@@ -72,7 +65,7 @@ struct NamedLaw {
   UniaxialLawSpec law;
 };
 
-enum class BeamGeometry { linear, pdelta, corotational };
+using element::BeamGeometry;
 
 /// `elastic_beam`: an elastic beam-column. Orientation: a vector in the local x-z plane
 /// (OpenSees vecxz); absent: global Z for a member not along Z, global X for one along Z.
