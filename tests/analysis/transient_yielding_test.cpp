@@ -7,6 +7,7 @@
 #include "brb/analysis/modal_analysis.hpp"
 #include "brb/analysis/transient_analysis.hpp"
 #include "brb/element/brace_truss.hpp"
+#include "brb/element/zero_length_spring.hpp"
 #include "brb/model/dof_map.hpp"
 #include "support/oscillator_models.hpp"
 
@@ -152,6 +153,71 @@ TEST(TransientYielding, YieldingChainConvergesInTimeStep) {
             << " / HHT " << dissipative.peak_roof << " mm; balance " << newmark.relative_error
             << " / " << newmark_fine.relative_error << " / HHT " << dissipative.relative_error
             << "; dissipated " << newmark.dissipated_share << " of the input\n";
+}
+
+TEST(TransientYielding, WideDiaphragmIsInEquilibriumAtEveryStep) {
+  // A rigid diaphragm 100 m wide: two slaves at x = +-50 m on yielding BraceTruss along X
+  // (and elastic springs along Y), the mass on the master. The master's rotation carries
+  // stiffnesses k a^2 = 1e14 N mm/rad; a residual floor taken from the largest tangent entry
+  // would accept force residuals of 1e5 N (the yield force) and break the balance. Reference:
+  // equilibrium of the committed state, T^T f_int + M a = -M r a_g, and the energy balance.
+  element::BraceTrussParameters brace;
+  brace.steel.youngs_modulus = 200000.0;
+  brace.steel.yield_stress = 250.0;
+  brace.steel.kinematic_hardening = 2000.0;
+  brace.core_area = 400.0;
+  brace.yielding_length = 2000.0;
+  const double a = 50000.0, mass = 60.0;
+  model::Model model;
+  const int master = model.add_node({0.0, 0.0, 3000.0});
+  for (const model::Dof dof : {model::uz, model::rx, model::ry})
+    model.fix(master, dof);
+  model.add_mass(master, {mass, mass, 0.0, 0.0, 0.0, mass * a * a});
+  std::vector<int> slaves;
+  for (const double x : {a, -a}) {
+    const int slave = model.add_node({x, 0.0, 3000.0});
+    for (const model::Dof dof : {model::uz, model::rx, model::ry})
+      model.fix(slave, dof);
+    const int ground = model.add_node({x - brace.yielding_length, 0.0, 3000.0});
+    model.fix_all(ground);
+    model.add_element(std::make_unique<element::BraceTruss>(std::array<int, 2>{ground, slave},
+                                                            model.coordinates(ground),
+                                                            model.coordinates(slave), brace));
+    model.add_element(std::make_unique<element::ZeroLengthSpring>(
+        std::array<int, 2>{ground, slave}, model.coordinates(ground), model.coordinates(slave),
+        element::SpringStiffness{0.0, 2.0e4, 0.0, 0.0, 0.0, 0.0}));
+    slaves.push_back(slave);
+  }
+  model.add_rigid_diaphragm({master, slaves});
+  TransientAnalysis analysis(model, model::DofMap::build(model, 3));
+  const model::DofMap& map = analysis.dof_map();
+  GroundAcceleration pulse;
+  pulse.dt = 0.01;
+  for (int i = 0; i <= 30; ++i)
+    pulse.acceleration.push_back(6000.0 * std::sin(kPi * i / 30.0));
+  analysis.add_ground_acceleration(pulse);
+  const Eigen::VectorXd influence = map.ground_influence(Eigen::Vector3d::UnitX());
+  const int ux = map.independent_equation(model::Model::global_dof(master, model::ux));
+  const double yield_force = brace.steel.yield_stress * brace.core_area;
+  double peak = 0.0, largest_residual = 0.0;
+  for (int n = 0; n < 200; ++n) {
+    ASSERT_TRUE(analysis.step(0.005).converged);
+    peak = std::max(peak,
+                    std::abs(analysis.displacement()[model::Model::global_dof(master, model::ux)]));
+    Eigen::VectorXd acceleration = Eigen::VectorXd::Zero(map.equation_count());
+    for (int dof = 0; dof < map.full_dof_count(); ++dof) {
+      if (map.independent_equation(dof) >= 0)
+        acceleration[map.independent_equation(dof)] = analysis.acceleration()[dof];
+    }
+    const Eigen::VectorXd residual =
+        map.reduce(analysis.internal_force()) + analysis.mass() * acceleration +
+        analysis.mass() * influence * analysis.ground_acceleration().x();
+    largest_residual = std::max(largest_residual, std::abs(residual[ux]));
+  }
+  EXPECT_GT(peak, 3.0 * yield_force * brace.yielding_length /
+                      (brace.steel.youngs_modulus * brace.core_area)); // it yields
+  EXPECT_LT(largest_residual, 1e-6 * yield_force);
+  EXPECT_LT(analysis.energy().relative_error(), 1e-3);
 }
 
 } // namespace

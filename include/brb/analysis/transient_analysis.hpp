@@ -42,8 +42,9 @@ struct TransientSettings {
   /// Converged when |residual|_inf <= tolerance * (largest element force + largest
   /// inertia/damping/external force + 1 N + round-off floor) after at least one Newton
   /// correction (so a linear system is solved to round-off, never accepted at its predictor).
-  /// The round-off floor is position_round_off x model size x the largest entry of the
-  /// element tangent (T^T K T) / tolerance, as in StaticAnalysis.
+  /// Plus a round-off floor per equation: position_round_off x sum_j |K_ij| x length_j
+  /// (length_j: the model's size for a translation, 1 rad for a rotation), the force that
+  /// the positions' relative round-off makes through the element tangent T^T K T.
   double relative_force_tolerance = 1e-8;
   double position_round_off = 1e-14;
   bool line_search = true;
@@ -222,7 +223,11 @@ private:
   std::string initial_failure_; // the start could not be evaluated
   bool acceleration_consistent_ = true;
   double model_extent_ = 1.0; // mm, for the round-off floor
-  double stiffest_ = 0.0;     // largest entry of the last tangent T^T K T
+  // Per equation: the length whose relative round-off its unknown carries (the model's size
+  // for translations, 1 rad for rotations), and the residual's round-off floor from the last
+  // tangent, position_round_off x sum_j |K_ij| length_j.
+  Eigen::VectorXd equation_length_;
+  Eigen::VectorXd round_off_floor_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver_;
   std::vector<int> solver_pattern_; // outer and inner indices the solver was analysed for
   double time_ = 0.0;
