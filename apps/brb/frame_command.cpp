@@ -9,6 +9,7 @@
 #include "brb/io/ground_motion.hpp"
 #include "brb/io/input_error.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -74,9 +75,12 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
                    ".csv (time,accel or one column with --dt) or a one-column .rec/.txt")
       ->type_name("FILE")
       ->required();
-  frame->add_option("--motion-y", command.motion_y,
-                    "Second horizontal component (3D models whose ground_motion lists two "
-                    "directions)")
+  frame->add_option("--motion2", command.motion_2,
+                    "Component along the model's second ground-motion direction "
+                    "(ground_motion.directions, e.g. \"y\" or the vertical \"z\")")
+      ->type_name("FILE");
+  frame->add_option("--motion3", command.motion_3,
+                    "Component along the model's third ground-motion direction")
       ->type_name("FILE");
   frame->add_option("--scale", command.scale, "Scale factor on the record(s); default 1")
       ->type_name("S");
@@ -116,16 +120,19 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
   std::vector<analysis::GroundAcceleration> components;
   const io::GroundMotion motion = read_motion(command.motion, command);
   components.push_back(component_of(motion, options.directions.front(), command.duration));
-  if (command.motion_y) {
-    if (options.directions.size() < 2)
+  const std::array<const std::optional<fs::path>*, 2> more{&command.motion_2, &command.motion_3};
+  for (std::size_t k = 0; k < more.size(); ++k) {
+    if (!*more[k])
+      continue;
+    const std::string option = k == 0 ? "--motion2" : "--motion3";
+    if (options.directions.size() < k + 2 || components.size() != k + 1)
       throw io::InputError(command.model.string(), "/ground_motion/directions",
-                           "two directions are needed for --motion-y");
+                           option + " needs the model to list " + std::to_string(k + 2) +
+                               " directions (and the components before it given)");
     components.push_back(
-        component_of(read_motion(*command.motion_y, command), options.directions[1],
-                     command.duration));
-  } else {
-    options.directions.resize(1);
+        component_of(read_motion(**more[k], command), options.directions[k + 1], command.duration));
   }
+  options.directions.resize(components.size());
   if (!(options.dt > 0.0))
     options.dt = motion.dt;
   frame::BraceOverride braces = frame::BraceOverride::none;

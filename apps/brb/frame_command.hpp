@@ -14,8 +14,10 @@ namespace brb::cli {
 struct FrameCommand {
   std::filesystem::path model;  ///< MODEL.json (README: "Frame model files")
   std::filesystem::path motion; ///< ground motion along the model's first direction
-  /// A second horizontal component (3D models with two ground directions).
-  std::optional<std::filesystem::path> motion_y;
+  /// Components along the model's second and third ground-motion directions (e.g. "y" and
+  /// the vertical "z"; README "Frame model files", ground_motion).
+  std::optional<std::filesystem::path> motion_2;
+  std::optional<std::filesystem::path> motion_3;
   double scale = 1.0;                ///< factor on the record(s)
   std::optional<std::string> units;  ///< g, m/s^2, mm/s^2 (AT2: from the header by default)
   std::optional<double> record_dt;   ///< s, for single-column records

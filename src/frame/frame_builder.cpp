@@ -296,8 +296,9 @@ FrameRunOptions run_options_of(const model::FrameSpec& spec) {
   options.recorders.braces = spec.recorders.brace_ids;
   options.directions.clear();
   for (const model::GroundDirection direction : spec.ground_directions)
-    options.directions.push_back(direction == model::GroundDirection::x ? Eigen::Vector3d::UnitX()
-                                                                        : Eigen::Vector3d::UnitY());
+    options.directions.push_back(direction == model::GroundDirection::x   ? Eigen::Vector3d::UnitX()
+                                 : direction == model::GroundDirection::y ? Eigen::Vector3d::UnitY()
+                                                                          : Eigen::Vector3d::UnitZ());
   return options;
 }
 

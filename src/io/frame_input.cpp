@@ -828,19 +828,22 @@ private:
     const auto directions = ground_motion.find("directions");
     if (!directions)
       return;
-    const std::size_t count = directions->expect_array(2, "ground motion directions");
+    const std::size_t count = directions->expect_array(3, "ground motion directions");
     if (count == 0)
-      throw directions->error("expected one or two directions (\"x\", \"y\")");
+      throw directions->error(
+          "expected one to three directions (\"x\", \"y\", \"z\" for the vertical)");
     spec_.ground_directions.clear();
     for (std::size_t index = 0; index < count; ++index) {
       const JsonValue entry = directions->element(index);
       const auto direction = one_of<model::GroundDirection>(
           entry, "ground motion direction",
-          {{"x", model::GroundDirection::x}, {"y", model::GroundDirection::y}});
+          {{"x", model::GroundDirection::x},
+           {"y", model::GroundDirection::y},
+           {"z", model::GroundDirection::z}});
       if (direction == model::GroundDirection::y &&
           spec_.dimension == model::FrameDimension::planar) {
         throw entry.error("a planar model (dimension 2, X-Z plane) takes ground motion along "
-                          "\"x\" only");
+                          "\"x\" and \"z\" only");
       }
       if (std::find(spec_.ground_directions.begin(), spec_.ground_directions.end(), direction) !=
           spec_.ground_directions.end()) {
@@ -962,7 +965,9 @@ private:
     const auto directions = root_.find("ground_motion");
     for (std::size_t index = 0; index < spec_.ground_directions.size(); ++index) {
       const auto direction = spec_.ground_directions[index];
-      const Dof dof = direction == model::GroundDirection::x ? Dof::ux : Dof::uy;
+      const Dof dof = direction == model::GroundDirection::x   ? Dof::ux
+                      : direction == model::GroundDirection::y ? Dof::uy
+                                                               : Dof::uz;
       if (!(total[dof] > 0.0)) {
         const std::string location =
             directions ? directions->path() + "/directions/" + std::to_string(index)

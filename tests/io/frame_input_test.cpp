@@ -589,7 +589,7 @@ INSTANTIATE_TEST_SUITE_P(
         InvalidFrameCase{"planar ground motion along y",
                          [](json& d) { d["ground_motion"]["directions"] = {"y"}; },
                          "/ground_motion/directions/0",
-                         {"\"x\" only"}},
+                         {"\"x\" and \"z\" only"}},
         InvalidFrameCase{"orientation parallel to the member",
                          [](json& d) { d["elements"][0]["orientation"] = {0, 0, 2}; },
                          "/elements/0/orientation",

@@ -161,7 +161,8 @@ struct AnalysisSpec {
   double drift_limit = 0.10;   ///< collapse: a story drift ratio above it stops the run
 };
 
-enum class GroundDirection { x, y };
+/// Ground-motion components: the two horizontal axes and the vertical.
+enum class GroundDirection { x, y, z };
 
 struct StorySpec {
   std::string name;
