@@ -182,7 +182,8 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
   if (result.stop_reason != "completed")
     report << ": " << result.stop_reason;
   report << "\n";
-  for (std::size_t s = 0; s < frame.stories.size(); ++s) {
+  // (no drifts when the gravity load failed: the run stopped before any step)
+  for (std::size_t s = 0; s < result.max_drift.size(); ++s) {
     report << "  story " << frame.stories[s].name << ": peak drift " << std::setprecision(4)
            << 100.0 * result.max_drift[s] << " %, residual " << 100.0 * result.residual_drift[s]
            << " %\n";

@@ -345,6 +345,7 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
       analysis.apply_static_load(frame.gravity_load, std::max(frame.gravity_steps, 1));
   result.gravity_converged = gravity.converged;
   if (!gravity.converged) {
+    // no step was taken: the drifts stay empty (not zero: nothing was computed)
     result.stop_reason = "gravity load did not converge: " + gravity.failure;
     return result;
   }

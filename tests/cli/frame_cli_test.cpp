@@ -425,4 +425,31 @@ TEST(FrameCli, Brbf9UnderEightTimesRinaldiCollapsesAndStopsAtTheDriftLimit) {
     ASSERT_LE(largest_drift(drifts.rows[i]), 0.1) << "t = " << drifts.rows[i].front();
 }
 
+TEST(FrameCli, AGravityLoadThatFailsIsReportedWithExitOne) {
+  // The portal made of trusses on pinned supports is a mechanism (its node rotations and its
+  // sway have no stiffness): the gravity steps fail after every fallback. The run says so
+  // (exit 1, summary.json with converged false and no drifts, since no step was taken).
+  json mechanism = portal_frame(false);
+  for (json& element : mechanism["elements"]) {
+    element = {{"id", element["id"]},
+               {"type", "truss"},
+               {"nodes", element["nodes"]},
+               {"area", 1000},
+               {"material", "brace"}};
+  }
+  mechanism["supports"] = {{{"node", 1}, {"fix", "pinned"}}, {{"node", 2}, {"fix", "pinned"}}};
+  mechanism["gravity"] = {{"from_masses", true}};
+  const ScratchDirectory scratch;
+  const auto model = scratch.write("mechanism.json", mechanism.dump());
+  const auto output = scratch.path() / "results";
+  const CliRun run = run_brb(frame_arguments(model, kElCentro, output, "--duration 0.1"));
+  ASSERT_EQ(run.exit_code, 1) << run.err << run.out;
+  EXPECT_NE(run.err.find("gravity"), std::string::npos) << run.err;
+  const json summary = read_json(output / "summary.json");
+  EXPECT_FALSE(summary.at("converged").get<bool>());
+  EXPECT_NE(summary.at("stop_reason").get<std::string>().find("gravity"), std::string::npos);
+  EXPECT_TRUE(summary.at("max_drift").empty());
+  EXPECT_EQ(summary.at("steps").get<int>(), 0);
+}
+
 } // namespace
