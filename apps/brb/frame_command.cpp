@@ -66,7 +66,8 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
   auto* frame = app.add_subcommand(
       "frame", "Nonlinear time-history analysis of a frame model under a ground motion: "
                "gravity, modal analysis, then the record step by step.");
-  frame->add_option("model", command.model, "Frame model file, JSON (README: \"Frame model files\")")
+  frame
+      ->add_option("model", command.model, "Frame model file, JSON (README: \"Frame model files\")")
       ->type_name("MODEL.json")
       ->required();
   frame
@@ -75,29 +76,34 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
                    ".csv (time,accel or one column with --dt) or a one-column .rec/.txt")
       ->type_name("FILE")
       ->required();
-  frame->add_option("--motion2", command.motion_2,
-                    "Component along the model's second ground-motion direction "
-                    "(ground_motion.directions, e.g. \"y\" or the vertical \"z\")")
+  frame
+      ->add_option("--motion2", command.motion_2,
+                   "Component along the model's second ground-motion direction "
+                   "(ground_motion.directions, e.g. \"y\" or the vertical \"z\")")
       ->type_name("FILE");
-  frame->add_option("--motion3", command.motion_3,
-                    "Component along the model's third ground-motion direction")
+  frame
+      ->add_option("--motion3", command.motion_3,
+                   "Component along the model's third ground-motion direction")
       ->type_name("FILE");
   frame->add_option("--scale", command.scale, "Scale factor on the record(s); default 1")
       ->type_name("S");
-  frame->add_option("--units", command.units,
-                    "Units of the record: g, m/s^2 or mm/s^2 (AT2 files state theirs)")
+  frame
+      ->add_option("--units", command.units,
+                   "Units of the record: g, m/s^2 or mm/s^2 (AT2 files state theirs)")
       ->type_name("UNITS");
   frame->add_option("--dt", command.record_dt, "Time step of a one-column record, s")
       ->type_name("S");
-  frame->add_option("--duration", command.duration,
-                    "Analyse only the first S seconds of the record")
+  frame
+      ->add_option("--duration", command.duration, "Analyse only the first S seconds of the record")
       ->type_name("S");
-  frame->add_option("--braces", command.braces,
-                    "Build every brace as: elastic (an elastic truss of its axial stiffness), "
-                    "truss, full or auto, instead of the fidelity the model file gives")
+  frame
+      ->add_option("--braces", command.braces,
+                   "Build every brace as: elastic (an elastic truss of its axial stiffness), "
+                   "truss, full or auto, instead of the fidelity the model file gives")
       ->type_name("FIDELITY");
-  frame->add_option("--out", command.output_directory,
-                    "Output directory (created if missing; its parent must exist)")
+  frame
+      ->add_option("--out", command.output_directory,
+                   "Output directory (created if missing; its parent must exist)")
       ->type_name("DIR")
       ->required();
   frame->footer("Outputs (README, \"brb frame\"): summary.json and the histories the model's\n"
@@ -176,9 +182,9 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
          << " under " << command.motion.filename().string() << " x " << command.scale << "\n";
   if (!result.periods.empty())
     report << "  T1 = " << std::setprecision(4) << result.periods.front() << " s\n";
-  report << "  " << (result.stop_reason == "completed" ? "completed" : "stopped") << " at t = "
-         << result.end_time << " of " << result.duration << " s (" << result.steps << " steps, "
-         << result.fallbacks.size() << " fallbacks)";
+  report << "  " << (result.stop_reason == "completed" ? "completed" : "stopped")
+         << " at t = " << result.end_time << " of " << result.duration << " s (" << result.steps
+         << " steps, " << result.fallbacks.size() << " fallbacks)";
   if (result.stop_reason != "completed")
     report << ": " << result.stop_reason;
   report << "\n";

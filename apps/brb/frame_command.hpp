@@ -18,10 +18,10 @@ struct FrameCommand {
   /// the vertical "z"; README "Frame model files", ground_motion).
   std::optional<std::filesystem::path> motion_2;
   std::optional<std::filesystem::path> motion_3;
-  double scale = 1.0;                ///< factor on the record(s)
-  std::optional<std::string> units;  ///< g, m/s^2, mm/s^2 (AT2: from the header by default)
-  std::optional<double> record_dt;   ///< s, for single-column records
-  std::optional<double> duration;    ///< s, analyse only the first part of the record
+  double scale = 1.0;               ///< factor on the record(s)
+  std::optional<std::string> units; ///< g, m/s^2, mm/s^2 (AT2: from the header by default)
+  std::optional<double> record_dt;  ///< s, for single-column records
+  std::optional<double> duration;   ///< s, analyse only the first part of the record
   /// Overrides every brace's fidelity: elastic, truss, full or auto.
   std::optional<std::string> braces;
   std::filesystem::path output_directory;

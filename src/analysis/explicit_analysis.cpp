@@ -231,8 +231,7 @@ ExplicitAnalysis::estimate_stable_step(const Eigen::SparseMatrix<double>& tangen
     for (Eigen::SparseMatrix<double>::InnerIterator it(symmetric, column); it; ++it)
       row_sum[it.row()] += std::abs(it.value());
   }
-  const double row_bound =
-      row_sum.size() > 0 ? row_sum.cwiseQuotient(mass_).maxCoeff() : 0.0;
+  const double row_bound = row_sum.size() > 0 ? row_sum.cwiseQuotient(mass_).maxCoeff() : 0.0;
   StableStepEstimate estimate;
   estimate.max_frequency = std::sqrt(std::min(power.eigenvalue, row_bound));
   estimate.gershgorin_bound = std::sqrt(std::min(power.gershgorin, row_bound));

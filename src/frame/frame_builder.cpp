@@ -53,8 +53,8 @@ public:
         std::visit([&](const auto& kind) { add(element, kind); }, element.kind);
       } catch (const ParameterError& error) {
         throw io::InputError(source_, "/elements/" + std::to_string(e),
-                             "element " + std::to_string(element.id) + ": " + error.field() +
-                                 ": " + error.what());
+                             "element " + std::to_string(element.id) + ": " + error.field() + ": " +
+                                 error.what());
       }
     }
     for (int n = 0; n < model.node_count(); ++n) {
@@ -80,8 +80,9 @@ private:
     return {node(element.nodes[0]), node(element.nodes[1])};
   }
 
-  template <class ElementType> void place(const model::FrameElementSpec& element,
-                                          std::unique_ptr<ElementType> built, bool damped) {
+  template <class ElementType>
+  void place(const model::FrameElementSpec& element, std::unique_ptr<ElementType> built,
+             bool damped) {
     frame_.model->add_element(std::move(built));
     frame_.element_ids.push_back(element.id);
     frame_.in_stiffness_damping.push_back(damped);
@@ -140,8 +141,8 @@ private:
       const int next =
           k == beam.subdivisions
               ? last
-              : frame_.model->add_node(start + (end - start) * (static_cast<double>(k) /
-                                                                beam.subdivisions));
+              : frame_.model->add_node(start + (end - start) *
+                                                   (static_cast<double>(k) / beam.subdivisions));
       if (k < beam.subdivisions)
         frame_.node_ids.push_back(-element.id); // an internal node of element `id`
       std::vector<model::CoreSection> sections;
@@ -205,9 +206,9 @@ private:
       if (brace.mode == model::ElementMode::expanded)
         throw ParameterError("mode", "an expanded brace is not available in frames yet: use "
                                      "\"mode\": \"condensed\"");
-      auto built = std::make_unique<analysis::BRBElement>(
-          std::array<int, 2>{start, end}, position(start), position(end), brace.brace,
-          brace.orientation);
+      auto built =
+          std::make_unique<analysis::BRBElement>(std::array<int, 2>{start, end}, position(start),
+                                                 position(end), brace.brace, brace.orientation);
       reference.full = built.get();
       reference.yield_deformation = built->internal_brace().yield_deformation;
       reference.fidelity = "full";
@@ -226,9 +227,8 @@ private:
     element::TrussSpec built;
     built.nodes = {start, end};
     built.area = truss.core_area;
-    built.material = element::ElasticLawParameters{reference.elastic_stiffness() *
-                                                   (position(end) - position(start)).norm() /
-                                                   truss.core_area};
+    built.material = element::ElasticLawParameters{
+        reference.elastic_stiffness() * (position(end) - position(start)).norm() / truss.core_area};
     place(element, element::make_truss(built, position(start), position(end)), true);
   }
 
@@ -296,9 +296,10 @@ FrameRunOptions run_options_of(const model::FrameSpec& spec) {
   options.recorders.braces = spec.recorders.brace_ids;
   options.directions.clear();
   for (const model::GroundDirection direction : spec.ground_directions)
-    options.directions.push_back(direction == model::GroundDirection::x   ? Eigen::Vector3d::UnitX()
-                                 : direction == model::GroundDirection::y ? Eigen::Vector3d::UnitY()
-                                                                          : Eigen::Vector3d::UnitZ());
+    options.directions.push_back(direction == model::GroundDirection::x ? Eigen::Vector3d::UnitX()
+                                 : direction == model::GroundDirection::y
+                                     ? Eigen::Vector3d::UnitY()
+                                     : Eigen::Vector3d::UnitZ());
   return options;
 }
 

@@ -41,12 +41,10 @@ Json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,
   summary["peak_base_shear"] = result.peak_base_shear;
   summary["energy_input"] = result.energy.input;
   summary["energy_balance_error"] = result.energy_balance_error;
-  summary["energy"] = Json{{"input", result.energy.input},
-                           {"static_work", result.energy.static_work},
-                           {"kinetic", result.energy.kinetic},
-                           {"damping", result.energy.damping},
-                           {"stored", result.energy.stored},
-                           {"dissipated", result.energy.dissipated}};
+  summary["energy"] =
+      Json{{"input", result.energy.input},     {"static_work", result.energy.static_work},
+           {"kinetic", result.energy.kinetic}, {"damping", result.energy.damping},
+           {"stored", result.energy.stored},   {"dissipated", result.energy.dissipated}};
   Json fallbacks = Json::array();
   for (const analysis::FallbackRecord& fallback : result.fallbacks)
     fallbacks.push_back(
@@ -66,8 +64,8 @@ Json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,
   }
   summary["braces"] = braces;
   summary["wall_time"] = description.wall_time;
-  summary["units"] = Json{{"force", "N"}, {"length", "mm"}, {"time", "s"},
-                          {"energy", "N mm"}, {"acceleration", "g"}};
+  summary["units"] = Json{
+      {"force", "N"}, {"length", "mm"}, {"time", "s"}, {"energy", "N mm"}, {"acceleration", "g"}};
   return summary;
 }
 

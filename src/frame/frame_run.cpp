@@ -116,8 +116,8 @@ public:
         shear.columns.push_back("base_shear_y");
     }
     if (asked.energy) {
-      result_.histories["energy"].columns = {"time",  "input",  "static_work", "kinetic",
-                                             "damping", "stored", "dissipated", "error"};
+      result_.histories["energy"].columns = {"time",    "input",  "static_work", "kinetic",
+                                             "damping", "stored", "dissipated",  "error"};
     }
     for (const int id : asked.braces) {
       const auto found = std::find_if(frame.braces.begin(), frame.braces.end(),
@@ -129,8 +129,9 @@ public:
     }
     if (!recorded_braces_.empty()) {
       History& braces = result_.histories["braces"];
-      braces.columns = {"time",     "brace",  "force",          "deformation", "core_strain",
-                        "cid",      "steel_damage", "mortar_damage", "core_fracture",
+      braces.columns = {"time",           "brace",          "force",
+                        "deformation",    "core_strain",    "cid",
+                        "steel_damage",   "mortar_damage",  "core_fracture",
                         "casing_failure", "global_buckling"};
     }
   }
@@ -142,9 +143,8 @@ public:
     std::vector<double> drift_row{time};
     for (std::size_t s = 0; s < frame_.stories.size(); ++s) {
       const StoryReference& story = frame_.stories[s];
-      const Eigen::Vector3d relative =
-          displacement.segment<3>(kDofPerNode * story.top) -
-          displacement.segment<3>(kDofPerNode * story.bottom);
+      const Eigen::Vector3d relative = displacement.segment<3>(kDofPerNode * story.top) -
+                                       displacement.segment<3>(kDofPerNode * story.bottom);
       const double drift_x = relative.x() / story.height, drift_y = relative.y() / story.height;
       const double drift = std::hypot(drift_x, drift_y);
       result_.max_drift[s] = std::max(result_.max_drift[s], drift);
@@ -189,9 +189,9 @@ public:
 
     const analysis::TransientEnergy& energy = solver.energy();
     if (options_.recorders.energy) {
-      result_.histories["energy"].rows.push_back(
-          {time, energy.input, energy.static_work, energy.kinetic, energy.damping, energy.stored,
-           energy.dissipated, energy.absolute_error()});
+      result_.histories["energy"].rows.push_back({time, energy.input, energy.static_work,
+                                                  energy.kinetic, energy.damping, energy.stored,
+                                                  energy.dissipated, energy.absolute_error()});
     }
 
     for (std::size_t b = 0; b < frame_.braces.size(); ++b)
@@ -257,8 +257,9 @@ analysis::DampingSpec damping_spec(const FrameModel& frame, const FrameRunOption
   const DampingOptions& damping = options.damping;
   const auto frequency = [&](int mode) {
     if (mode < 1 || mode > static_cast<int>(modes.size()))
-      throw std::invalid_argument("damping: mode " + std::to_string(mode) + " asked, the model has " +
-                                  std::to_string(modes.size()) + " modes with mass");
+      throw std::invalid_argument("damping: mode " + std::to_string(mode) +
+                                  " asked, the model has " + std::to_string(modes.size()) +
+                                  " modes with mass");
     return modes[mode - 1].circular_frequency;
   };
   switch (damping.kind) {
@@ -312,13 +313,14 @@ double explicit_step_for_mass_scaling(analysis::TransientAnalysis& analysis, dou
   if (massless_stiffness == 0.0)
     return std::numeric_limits<double>::infinity();
   const double target = fraction * translational_mass / massless_stiffness;
-  return 0.5 * (-stiffness_damping +
-                std::sqrt(stiffness_damping * stiffness_damping + 4.0 * target));
+  return 0.5 *
+         (-stiffness_damping + std::sqrt(stiffness_damping * stiffness_damping + 4.0 * target));
 }
 
 } // namespace
 
-FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAcceleration>& components,
+FrameRunResult run_time_history(FrameModel& frame,
+                                const std::vector<GroundAcceleration>& components,
                                 const FrameRunOptions& options) {
   if (components.empty())
     throw std::invalid_argument("a time-history analysis needs a ground motion");
@@ -337,8 +339,8 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
   settings.integrator = options.integrator == Integrator::hht ? analysis::TimeIntegrator::hht
                                                               : analysis::TimeIntegrator::newmark;
   settings.hht_alpha = options.integrator == Integrator::hht ? options.hht_alpha : 0.0;
-  analysis::TransientAnalysis analysis(*frame.model, model::DofMap::build(*frame.model, frame.dimension),
-                                       settings);
+  analysis::TransientAnalysis analysis(
+      *frame.model, model::DofMap::build(*frame.model, frame.dimension), settings);
 
   // Gravity, held during the dynamic run.
   const analysis::TransientStepReport gravity =
@@ -350,10 +352,9 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
     return result;
   }
 
-  const std::vector<analysis::Mode> modes =
-      analysis::modal_analysis(analysis.tangent(), analysis.mass(), analysis.dof_map(),
-                               std::max({options.damping.mode_i, options.damping.mode_j,
-                                         options.damping.modal_modes, 3}));
+  const std::vector<analysis::Mode> modes = analysis::modal_analysis(
+      analysis.tangent(), analysis.mass(), analysis.dof_map(),
+      std::max({options.damping.mode_i, options.damping.mode_j, options.damping.modal_modes, 3}));
   for (const analysis::Mode& mode : modes)
     result.periods.push_back(mode.period);
   const analysis::DampingSpec damping = damping_spec(frame, options, modes);
@@ -423,8 +424,8 @@ FrameRunResult run_time_history(FrameModel& frame, const std::vector<GroundAccel
     if (!report.converged) {
       result.converged = false;
       std::ostringstream reason;
-      reason << "step to t = " << target << " s did not converge after every fallback: "
-             << report.failure;
+      reason << "step to t = " << target
+             << " s did not converge after every fallback: " << report.failure;
       result.stop_reason = reason.str();
       break;
     }

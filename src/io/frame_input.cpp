@@ -835,11 +835,10 @@ private:
     spec_.ground_directions.clear();
     for (std::size_t index = 0; index < count; ++index) {
       const JsonValue entry = directions->element(index);
-      const auto direction = one_of<model::GroundDirection>(
-          entry, "ground motion direction",
-          {{"x", model::GroundDirection::x},
-           {"y", model::GroundDirection::y},
-           {"z", model::GroundDirection::z}});
+      const auto direction = one_of<model::GroundDirection>(entry, "ground motion direction",
+                                                            {{"x", model::GroundDirection::x},
+                                                             {"y", model::GroundDirection::y},
+                                                             {"z", model::GroundDirection::z}});
       if (direction == model::GroundDirection::y &&
           spec_.dimension == model::FrameDimension::planar) {
         throw entry.error("a planar model (dimension 2, X-Z plane) takes ground motion along "

@@ -33,9 +33,8 @@ FidelityChoice choose_auto_fidelity(const BraceSpec& spec) {
     return choice;
   }
   const double yield_force = spec.steel.yield_stress * spec.core_section.mesh().total_area();
-  choice.euler_ratio =
-      std::pow(std::numbers::pi / spec.yielding_length, 2) *
-      casing_assembly_flexural_rigidity(spec) / yield_force;
+  choice.euler_ratio = std::pow(std::numbers::pi / spec.yielding_length, 2) *
+                       casing_assembly_flexural_rigidity(spec) / yield_force;
   if (!spec.casing->steel_tube) {
     choice.reason = "full: mortar-only casing (it can crack and crush)";
     return choice;
@@ -47,8 +46,8 @@ FidelityChoice choose_auto_fidelity(const BraceSpec& spec) {
     return choice;
   }
   if (spec.casing->friction_coefficient > kTrussFrictionLimit) {
-    reason << "full: friction " << spec.casing->friction_coefficient << " > "
-           << kTrussFrictionLimit << " (compression overstrength)";
+    reason << "full: friction " << spec.casing->friction_coefficient << " > " << kTrussFrictionLimit
+           << " (compression overstrength)";
     choice.reason = reason.str();
     return choice;
   }

@@ -29,7 +29,6 @@ constexpr double kStep = 0.005; // s
 constexpr double kMass = 2.0;   // tonne
 constexpr double kDampingRatio = 0.05;
 
-
 /// Peak |u| of the Newmark solution and of the exact one over the same instants.
 std::pair<double, double> peaks(const io::GroundMotion& motion, double period) {
   const double omega = 2.0 * std::numbers::pi / period;
@@ -47,8 +46,7 @@ std::pair<double, double> peaks(const io::GroundMotion& motion, double period) {
   std::vector<double> resampled;
   for (long n = 0; n <= steps; ++n)
     resampled.push_back(ground.at(static_cast<double>(n) * kStep));
-  const SdofPeaks exact =
-      sdof_peaks(resampled, kStep, LinearOscillator{period, kDampingRatio});
+  const SdofPeaks exact = sdof_peaks(resampled, kStep, LinearOscillator{period, kDampingRatio});
 
   const int ux = model::Model::global_dof(1, model::ux);
   double newmark_peak = 0.0;
@@ -71,8 +69,8 @@ TEST(TransientRecord, ElasticOscillatorMatchesTheExactSolutionOnEverySharedRecor
       const auto [newmark, exact] = peaks(motion, period);
       ASSERT_GT(exact, 0.0);
       EXPECT_NEAR(newmark / exact, 1.0, 5e-3)
-          << record.filename() << ", T = " << period << " s: Newmark " << newmark
-          << " mm, exact " << exact << " mm";
+          << record.filename() << ", T = " << period << " s: Newmark " << newmark << " mm, exact "
+          << exact << " mm";
     }
   }
 }

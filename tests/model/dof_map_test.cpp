@@ -1,9 +1,9 @@
 // DofMap: master-slave elimination of restraints, planar models, equal-DOF and rigid
 // diaphragm constraints. References: the constraint equations themselves (rigid-body
 // kinematics of a slab, u_s = u_m + rz_m e_z x arm) and T^T M T computed by hand.
+#include "brb/element/zero_length_spring.hpp"
 #include "brb/model/assembler.hpp"
 #include "brb/model/dof_map.hpp"
-#include "brb/element/zero_length_spring.hpp"
 
 #include <gtest/gtest.h>
 

@@ -24,7 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 struct Building {
   model::FrameSpec spec;
   std::string file;

@@ -28,17 +28,17 @@
 // Gershgorin bound of that equation's row of M^-1 K0 is then w^2 <= 1 / (dt^2 + a1 dt), for
 // which the damped central-difference limit (2 / w)(sqrt(1 + xi^2) - xi), xi = a1 w / 2, is
 // 2 dt_target: twice the step, coupling included. (With stiffness damping, a mass of
-// R_i dt^2 alone would make the limit shrink like dt^2 / a1 as the step is refined.) The added mass is reported (mass_scaling()).
-// dt_target is the user's time step, or when automatic safety * 2 / max_i sqrt(|K0_ii| / m_i)
-// over the equations with mass.
+// R_i dt^2 alone would make the limit shrink like dt^2 / a1 as the step is refined.) The added mass
+// is reported (mass_scaling()). dt_target is the user's time step, or when automatic safety * 2 /
+// max_i sqrt(|K0_ii| / m_i) over the equations with mass.
 //
 // Stable step. w_max^2 is the largest eigenvalue of M^-1/2 K0 M^-1/2 (K0 symmetrised, scaled
 // masses included), by power iteration: rho + |A x - rho x| (the Rayleigh quotient plus its
 // residual, an eigenvalue lies within the residual of rho), capped by the Gershgorin bound
 // max_i sum_j |A_ij| and by that of M^-1 K0, max_i R_i / m_i (both rigorous; the second is
-// tight for scaled equations, where the power iteration converges slowly). With the damping ratio of that frequency,
-// xi_k = a1 w_max / 2 (the stiffness part of Rayleigh damping), dt_stable = safety *
-// (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and
+// tight for scaled equations, where the power iteration converges slowly). With the damping ratio
+// of that frequency, xi_k = a1 w_max / 2 (the stiffness part of Rayleigh damping), dt_stable =
+// safety * (2 / w_max) * (sqrt(1 + xi_k^2) - xi_k). The step is taken from the initial state and
 // estimated again every stability_check_interval steps from the tangent of the step's end
 // state: an automatic step is reduced to the new estimate and the step retaken
 // (fallbacks()), a given one stops the run. Between checks a stiffening that outgrows the

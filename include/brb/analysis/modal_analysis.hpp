@@ -27,7 +27,7 @@ struct Mode {
 /// std::runtime_error when the (condensed) stiffness is not positive definite (a
 /// mechanism) or the model has no mass.
 std::vector<Mode> modal_analysis(const Eigen::SparseMatrix<double>& tangent,
-                                 const Eigen::SparseMatrix<double>& mass,
-                                 const model::DofMap& map, int count);
+                                 const Eigen::SparseMatrix<double>& mass, const model::DofMap& map,
+                                 int count);
 
 } // namespace brb::analysis

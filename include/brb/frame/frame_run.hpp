@@ -58,9 +58,9 @@ struct History {
 struct BraceSummary {
   int id = 0;
   std::string fidelity;
-  double max_tension = 0.0;     ///< N
-  double max_compression = 0.0; ///< N (positive)
-  double max_core_strain = 0.0; ///< |core strain| peak
+  double max_tension = 0.0;                      ///< N
+  double max_compression = 0.0;                  ///< N (positive)
+  double max_core_strain = 0.0;                  ///< |core strain| peak
   double cumulative_inelastic_deformation = 0.0; ///< multiples of dy
   bool core_fracture = false;
   bool casing_failure = false;
@@ -72,12 +72,12 @@ struct FrameRunResult {
   bool converged = false; ///< every step converged (possibly with fallbacks)
   bool collapsed = false; ///< a story drift exceeded the limit
   std::string stop_reason;
-  double end_time = 0.0;  ///< s reached
-  double duration = 0.0;  ///< s asked (record + free vibration)
+  double end_time = 0.0; ///< s reached
+  double duration = 0.0; ///< s asked (record + free vibration)
   int steps = 0;
-  std::vector<double> periods; ///< s, of the gravity state
-  double explicit_time_step = 0.0;  ///< s, the explicit solver's stable step (0: implicit)
-  double added_mass_fraction = 0.0; ///< explicit: mass added by selective mass scaling
+  std::vector<double> periods;        ///< s, of the gravity state
+  double explicit_time_step = 0.0;    ///< s, the explicit solver's stable step (0: implicit)
+  double added_mass_fraction = 0.0;   ///< explicit: mass added by selective mass scaling
   std::vector<double> max_drift;      ///< per story, peak |drift ratio|
   std::vector<double> residual_drift; ///< per story, at the end
   std::vector<double> peak_floor_acceleration; ///< per floor, absolute, g

@@ -25,7 +25,7 @@ namespace brb::model {
 
 struct FidelityChoice {
   Fidelity fidelity = Fidelity::full;
-  std::string reason;      ///< which condition decided, with its numbers
+  std::string reason;       ///< which condition decided, with its numbers
   double euler_ratio = 0.0; ///< P_E / P_y (0 without casing)
 };
 
