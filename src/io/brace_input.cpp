@@ -149,22 +149,7 @@ material::MortarParameters read_mortar_object(const JsonValue& object) {
   object.expect_object({"E", "nu", "fc", "ft", "Gf"},
                        "an object of mortar parameters {E, nu, fc, ft, Gf} (lc comes from the "
                        "element)");
-  const auto required = [&object](std::string_view key, std::string_view meaning) {
-    return object.at(key, meaning).number(meaning);
-  };
-  material::MortarParameters mortar;
-  mortar.youngs_modulus = required("E", "Young's modulus E, MPa");
-  mortar.poissons_ratio = required("nu", "Poisson's ratio nu");
-  mortar.compressive_strength = required("fc", "compressive strength fc, MPa");
-  mortar.tensile_strength = required("ft", "tensile strength ft, MPa");
-  mortar.fracture_energy = required("Gf", "fracture energy Gf, N/mm");
-  try {
-    mortar.validate();
-  } catch (const ParameterError& error) {
-    throw InputError(object.source(), object.path() + json_path_of_parameter(error.field()),
-                     error.what());
-  }
-  return mortar;
+  return read_mortar_fields(object);
 }
 
 /// A clearance per side (mm): a finite number >= 0.
@@ -458,6 +443,25 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
 
 model::BraceSpec read_brace(const std::filesystem::path& file) {
   return parse_brace(read_text_file(file), file.string());
+}
+
+material::MortarParameters read_mortar_fields(const JsonValue& object) {
+  const auto required = [&object](std::string_view key, std::string_view meaning) {
+    return object.at(key, meaning).number(meaning);
+  };
+  material::MortarParameters mortar;
+  mortar.youngs_modulus = required("E", "Young's modulus E, MPa");
+  mortar.poissons_ratio = required("nu", "Poisson's ratio nu");
+  mortar.compressive_strength = required("fc", "compressive strength fc, MPa");
+  mortar.tensile_strength = required("ft", "tensile strength ft, MPa");
+  mortar.fracture_energy = required("Gf", "fracture energy Gf, N/mm");
+  try {
+    mortar.validate();
+  } catch (const ParameterError& error) {
+    throw InputError(object.source(), object.path() + json_path_of_parameter(error.field()),
+                     error.what());
+  }
+  return mortar;
 }
 
 } // namespace brb::io

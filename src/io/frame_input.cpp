@@ -186,22 +186,7 @@ material::MortarParameters read_mortar_law(const JsonValue& object) {
     if (value != "MPa")
       throw units->error("unsupported unit system \"" + value + "\"; expected \"MPa\"");
   }
-  const auto required = [&object](std::string_view key, std::string_view meaning) {
-    return object.at(key, meaning).number(meaning);
-  };
-  material::MortarParameters mortar;
-  mortar.youngs_modulus = required("E", "Young's modulus E, MPa");
-  mortar.poissons_ratio = required("nu", "Poisson's ratio nu");
-  mortar.compressive_strength = required("fc", "compressive strength fc, MPa");
-  mortar.tensile_strength = required("ft", "tensile strength ft, MPa");
-  mortar.fracture_energy = required("Gf", "fracture energy Gf, N/mm");
-  try {
-    mortar.validate();
-  } catch (const ParameterError& error) {
-    throw InputError(object.source(), object.path() + json_path_of_parameter(error.field()),
-                     error.what());
-  }
-  return mortar;
+  return read_mortar_fields(object);
 }
 
 /// Node ids and where each was defined, to resolve references.
