@@ -6,7 +6,6 @@
 namespace brb::analysis {
 namespace {
 
-constexpr double kFractureDamage = 0.9;      // a core fiber this damaged has fractured
 constexpr double kCrushedDamage = 0.9;       // a bearing face this damaged has crushed through
 constexpr double kGlobalBucklingRatio = 250; // lateral deflection beyond L_y / 250
 
@@ -122,13 +121,17 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
   if (yielding_length_ > 0.0 && global_lateral > yielding_length_ / kGlobalBucklingRatio)
     indicators.global_buckling = true;
 
-  const double elastic_stiffness = brace.yield_force / brace.yield_deformation;
   indicators.cumulative_inelastic_deformation +=
-      std::abs((deformation - previous_deformation_) -
-               (force - previous_force_) / elastic_stiffness) /
-      brace.yield_deformation;
+      inelastic_deformation_increment(deformation - previous_deformation_, force - previous_force_,
+                                      brace.yield_force, brace.yield_deformation);
   previous_deformation_ = deformation;
   previous_force_ = force;
+}
+
+double inelastic_deformation_increment(double d_deformation, double d_force, double yield_force,
+                                       double yield_deformation) {
+  const double elastic_stiffness = yield_force / yield_deformation;
+  return std::abs(d_deformation - d_force / elastic_stiffness) / yield_deformation;
 }
 
 } // namespace brb::analysis

@@ -29,6 +29,8 @@ public:
   virtual analysis::TransientStepReport step(double dt) = 0;
   virtual Eigen::VectorXd displacement() const = 0;
   virtual Eigen::VectorXd acceleration() const = 0;
+  /// Ground acceleration (global vector, mm/s^2) at the committed time.
+  virtual Eigen::Vector3d ground_acceleration() const = 0;
   virtual const Eigen::VectorXd& internal_force() const = 0;
   virtual const analysis::TransientEnergy& energy() const = 0;
   virtual const std::vector<analysis::FallbackRecord>& fallbacks() const = 0;
@@ -40,6 +42,7 @@ public:
   analysis::TransientStepReport step(double dt) override { return analysis_.step(dt); }
   Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
   Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
+  Eigen::Vector3d ground_acceleration() const override { return analysis_.ground_acceleration(); }
   const Eigen::VectorXd& internal_force() const override { return analysis_.internal_force(); }
   const analysis::TransientEnergy& energy() const override { return analysis_.energy(); }
   const std::vector<analysis::FallbackRecord>& fallbacks() const override {
@@ -65,6 +68,7 @@ public:
   }
   Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
   Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
+  Eigen::Vector3d ground_acceleration() const override { return analysis_.ground_acceleration(); }
   const Eigen::VectorXd& internal_force() const override { return analysis_.internal_force(); }
   const analysis::TransientEnergy& energy() const override { return analysis_.energy(); }
   const std::vector<analysis::FallbackRecord>& fallbacks() const override {
@@ -137,7 +141,7 @@ public:
   }
 
   /// Observes a converged state at `time`; returns the largest story drift ratio.
-  double observe(double time, const DynamicSolver& solver, const Eigen::Vector3d& ground) {
+  double observe(double time, const DynamicSolver& solver) {
     const Eigen::VectorXd displacement = solver.displacement();
     double largest_drift = 0.0;
     std::vector<double> drift_row{time};
@@ -159,6 +163,7 @@ public:
 
     if (!frame_.floors.empty()) {
       const Eigen::VectorXd acceleration = solver.acceleration();
+      const Eigen::Vector3d ground = solver.ground_acceleration();
       std::vector<double> row{time};
       for (std::size_t f = 0; f < frame_.floors.size(); ++f) {
         const Eigen::Vector3d absolute =
@@ -231,15 +236,13 @@ private:
       summary.casing_failure = indicators.casing_failure;
       summary.global_buckling = indicators.global_buckling;
     } else {
-      // CID as BraceIndicators defines it: sum |d(delta) - dF / K0| / dy, K0 = Py / dy
       auto& [last_force, last_deformation] = last_brace_state_[b];
-      const double initial_stiffness = brace.yield_force / brace.yield_deformation;
-      summary.cumulative_inelastic_deformation +=
-          std::abs(deformation - last_deformation - (force - last_force) / initial_stiffness) /
-          brace.yield_deformation;
+      summary.cumulative_inelastic_deformation += analysis::inelastic_deformation_increment(
+          deformation - last_deformation, force - last_force, brace.yield_force,
+          brace.yield_deformation);
       last_force = force;
       last_deformation = deformation;
-      summary.core_fracture = brace.truss->damage() >= 0.9;
+      summary.core_fracture = brace.truss->damage() >= analysis::kFractureDamage;
     }
   }
 
@@ -408,13 +411,7 @@ FrameRunResult run_time_history(FrameModel& frame,
   }
 
   Recorder recorder(frame, options, result);
-  const auto ground_at = [&](double time) {
-    Eigen::Vector3d ground = Eigen::Vector3d::Zero();
-    for (std::size_t c = 0; c < components.size(); ++c)
-      ground += options.directions[c] * components[c].at(time);
-    return ground;
-  };
-  recorder.observe(0.0, *solver, ground_at(0.0));
+  recorder.observe(0.0, *solver);
 
   const auto step_count = static_cast<long>(std::ceil(result.duration / dt - 1e-9));
   result.converged = true;
@@ -431,7 +428,7 @@ FrameRunResult run_time_history(FrameModel& frame,
     }
     result.end_time = target;
     ++result.steps;
-    const double drift = recorder.observe(target, *solver, ground_at(target));
+    const double drift = recorder.observe(target, *solver);
     if (drift > options.drift_limit) {
       result.collapsed = true;
       std::ostringstream reason;

@@ -32,6 +32,16 @@ struct BraceIndicators {
   bool global_buckling = false;
 };
 
+/// Steel damage at which a core fiber counts as fractured (the core-fracture flag).
+inline constexpr double kFractureDamage = 0.9;
+
+/// The increment of the cumulative inelastic deformation (multiples of dy) over a step that
+/// changed the brace's deformation by d_deformation (mm) and its force by d_force (N):
+/// |d(delta) - dF / K0| / dy with K0 = Py / dy (BraceIndicators). One rule for the full
+/// element (BraceIndicatorTracker) and the truss (the frame recorders).
+double inelastic_deformation_increment(double d_deformation, double d_force, double yield_force,
+                                       double yield_deformation);
+
 /// Updates BraceIndicators with each converged state of a brace. Lateral motions are
 /// measured in the brace's section axes (BraceHandles::axes).
 class BraceIndicatorTracker {
