@@ -3,15 +3,29 @@
 // "Applied incremental dynamic analysis", Earthq. Spectra 20(2), "hunt & fill"):
 //   1. hunt up: intensities first, first + step, ... with the step growing by `step_growth`
 //      after every non-collapsing run (IM_k+1 = IM_k + step + k * step_growth), until a run
-//      collapses (or the budget is spent, or `max_intensity` is passed);
+//      collapses (or the budget is spent, or `max_intensity` is reached: a hunting intensity
+//      above it is replaced by `max_intensity` itself, and hunting ends once that run
+//      survived);
 //   2. bracket: bisection between the highest non-collapsing intensity below the lowest
-//      collapsing one and that collapsing one, until the bracket is narrower than
-//      `resolution`;
+//      collapsing one (0 when there is none) and that collapsing one, until the bracket is no
+//      wider than `resolution`. When the first run collapses, the lower end is 0, so the
+//      intensity is halved until a run survives; if every run down to `resolution` collapses,
+//      the trace ends with no survival (capacity below `resolution`);
 //   3. fill: the remaining budget goes to the midpoints of the largest gaps between
-//      successive non-collapsing intensities (the curve below the flatline), largest first.
+//      successive non-collapsing intensities below the lowest collapse (the curve below the
+//      flatline; the origin is not one of them), largest first; gaps within 1e-9 relative of
+//      each other count as equal and the lowest goes first. Only gaps wider than `resolution`
+//      are filled: when none is left the trace is complete.
+// Non-monotonic curves: a fill run that collapses (a collapse window below the bracket found)
+// becomes the lowest collapse, and the bracket between it and the highest survival below it
+// is bisected before filling resumes. Survivals above the lowest collapse ("resurrection")
+// are kept in runs() but do not count: the bracket is always the lowest collapse and the
+// highest survival below it.
 // The tracer is a pure state machine: it asks for intensities and is told whether each run
-// collapsed. It depends on nothing but those answers, so a run replayed from a journal asks
-// for exactly the same intensities (deterministic, resumable, independent of threads).
+// collapsed. The next intensity is a function of the settings and the answers alone (no other
+// state, sums in a fixed order), so a run replayed from a journal asks for bitwise the same
+// intensities (deterministic, resumable, independent of threads). It never asks an intensity
+// twice.
 #pragma once
 
 #include <optional>
@@ -37,7 +51,7 @@ struct TracedRun {
 class HuntAndFill {
 public:
   /// Throws std::invalid_argument for settings outside their ranges (the message names the
-  /// field).
+  /// field); every value must be finite, and max_intensity must be 0 or >= first_intensity.
   explicit HuntAndFill(const HuntFillSettings& settings);
 
   /// The intensity of the next run; nothing when the trace is complete (budget spent, or
@@ -45,7 +59,7 @@ public:
   std::optional<double> next_intensity() const;
 
   /// The outcome of the run at `intensity`, which must be the value next_intensity() gave
-  /// (std::logic_error otherwise, compared bitwise).
+  /// (std::logic_error otherwise, compared bitwise, and when the trace is complete).
   void record(double intensity, bool collapsed);
 
   /// The runs in the order they were made.

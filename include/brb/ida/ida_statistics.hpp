@@ -21,16 +21,21 @@ struct CurvePoint {
 };
 
 /// The intensity at which a record's IDA curve first reaches `demand`: the curve is its
-/// non-collapsing points sorted by intensity, joined by straight lines from (0, 0); the first
-/// crossing of `demand` is interpolated linearly in (intensity, demand). When the curve never
-/// reaches `demand`: the highest non-collapsing intensity below the lowest collapse when the
-/// record collapsed (the flatline), +infinity when it never collapsed (capacity unknown,
-/// above every run).
+/// non-collapsing points below the lowest collapse (survivals above it, "resurrection", are
+/// ignored) sorted by intensity, joined by straight lines from (0, 0); the first crossing of
+/// `demand` is interpolated linearly in (intensity, demand). When the curve never reaches
+/// `demand`: the highest non-collapsing intensity below the lowest collapse when the record
+/// collapsed (the flatline; 0 when no run below the collapse survived), +infinity when it
+/// never collapsed (capacity unknown, above every run). Demand 0 gives 0. Throws
+/// std::invalid_argument for an empty curve, a demand that is negative or not finite, an
+/// intensity that is not finite and > 0, or a non-collapsing demand that is not finite and
+/// >= 0 (collapsed runs' demands are not used).
 double intensity_at_demand(std::span<const CurvePoint> curve, double demand);
 
 /// The p-fractile (0 < p < 1) of `values` by linear interpolation between order statistics
 /// (the Hyndman & Fan 1996 type 7 definition, as numpy/R default); +infinity values sort
-/// last. Throws std::invalid_argument on an empty span or p outside (0, 1).
+/// last, and any interpolation towards +infinity gives +infinity. Throws
+/// std::invalid_argument on an empty span, p outside (0, 1), or a NaN or -infinity value.
 double fractile(std::span<const double> values, double p);
 
 struct FractileRow {
@@ -41,6 +46,7 @@ struct FractileRow {
 };
 
 /// For each demand level, the 16/50/84 % fractiles over the records of intensity_at_demand.
+/// Throws std::invalid_argument when there are no curves.
 std::vector<FractileRow> fractiles_given_demand(const std::vector<std::vector<CurvePoint>>& curves,
                                                 std::span<const double> demands);
 
@@ -70,9 +76,14 @@ struct LognormalFragility {
 };
 
 /// The maximum-likelihood lognormal fit to the capacities (uncensored: density; censored:
-/// survival probability). Needs at least two uncensored capacities with different values
-/// (std::invalid_argument otherwise). Without censoring it is the closed form: median =
-/// exp(mean ln IM), beta = population standard deviation of ln IM (1/n).
+/// survival probability). With x = ln IM and z = (x - ln median) / beta:
+///   l = sum_collapsed [-ln beta - z^2 / 2] + sum_censored ln(1 - Phi(z)) + const,
+/// maximised by Newton's method with a backtracking line search in Olsen's parameters
+/// (ln median / beta, 1 / beta), in which l is strictly concave (unique maximum), started from
+/// the closed form of the collapses alone. Needs at least two uncensored capacities with
+/// different values, and every intensity finite and > 0 (std::invalid_argument otherwise).
+/// Without censoring it is the closed form: median = exp(mean ln IM), beta = population
+/// standard deviation of ln IM (1/n).
 LognormalFragility fit_collapse_fragility(std::span<const CollapseCapacity> capacities);
 
 /// FEMA P695 collapse margin ratio S_CT / S_MT (S_CT: the fragility median).
