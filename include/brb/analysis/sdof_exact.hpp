@@ -82,8 +82,11 @@ SdofPeaks sdof_peaks(std::span<const double> ground, double dt, const LinearOsci
 
 /// Pseudo-spectral acceleration Sa = omega^2 max|u| of an oscillator at rest when the record
 /// starts, in the record's units (mm/s^2); period 0 gives the peak ground acceleration (a rigid
-/// oscillator follows the ground). Throws std::invalid_argument for a negative period or zeta
-/// outside [0, 1).
+/// oscillator follows the ground). max|u| is that of the continuous response to the linearly
+/// interpolated record: |u| is sampled at exact substeps no longer than T / 400 inside each
+/// record step (peak missed by at most 3.1e-5 relative; at most 2000 substeps per step), not
+/// only at the record's samples, which miss up to 1 - cos(omega dt / 2) of it. Throws
+/// std::invalid_argument for a negative period or zeta outside [0, 1).
 double spectral_acceleration(const io::GroundMotion& motion, double period, double damping_ratio);
 
 /// spectral_acceleration at each of `periods`.
