@@ -3,6 +3,7 @@
 #include "calibrate_command.hpp"
 #include "cyclic_command.hpp"
 #include "frame_command.hpp"
+#include "ida_command.hpp"
 #include "material_command.hpp"
 #include "spectrum_command.hpp"
 #include "validate_command.hpp"
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
   const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
   brb::cli::FrameCommand frame_command;
   const CLI::App* frame = brb::cli::add_frame_command(app, frame_command);
+  brb::cli::IdaCommand ida_command;
+  const CLI::App* ida = brb::cli::add_ida_command(app, ida_command);
   brb::cli::ValidateCommand validate_command;
   const CLI::App* validate = brb::cli::add_validate_command(app, validate_command);
   brb::cli::CalibrateCommand calibrate_command;
@@ -47,7 +50,7 @@ int main(int argc, char** argv) {
       return app.exit(error); // --help
     }
     std::cerr << "brb: error: " << error.what() << "\n"
-              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, "
+              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, ida, "
                  "validate, calibrate, spectrum) for usage.\n";
     return kInvalidInput;
   }
@@ -59,6 +62,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
     if (frame->parsed())
       return brb::cli::run_frame_command(frame_command, std::cout, std::cerr);
+    if (ida->parsed())
+      return brb::cli::run_ida_command(ida_command, std::cout, std::cerr);
     if (validate->parsed())
       return brb::cli::run_validate_command(validate_command, std::cout);
     if (calibrate->parsed())

@@ -320,7 +320,32 @@ double explicit_step_for_mass_scaling(analysis::TransientAnalysis& analysis, dou
          (-stiffness_damping + std::sqrt(stiffness_damping * stiffness_damping + 4.0 * target));
 }
 
+/// The implicit analysis of the options (Newmark or HHT); the explicit solver starts from its
+/// gravity state.
+analysis::TransientAnalysis implicit_analysis_of(FrameModel& frame,
+                                                 const FrameRunOptions& options) {
+  analysis::TransientSettings settings;
+  settings.integrator = options.integrator == Integrator::hht ? analysis::TimeIntegrator::hht
+                                                              : analysis::TimeIntegrator::newmark;
+  settings.hht_alpha = options.integrator == Integrator::hht ? options.hht_alpha : 0.0;
+  return analysis::TransientAnalysis(*frame.model,
+                                     model::DofMap::build(*frame.model, frame.dimension), settings);
+}
+
 } // namespace
+
+std::vector<double> gravity_periods(FrameModel& frame, const FrameRunOptions& options, int modes) {
+  analysis::TransientAnalysis analysis = implicit_analysis_of(frame, options);
+  const analysis::TransientStepReport gravity =
+      analysis.apply_static_load(frame.gravity_load, std::max(frame.gravity_steps, 1));
+  if (!gravity.converged)
+    throw std::runtime_error("gravity load did not converge: " + gravity.failure);
+  std::vector<double> periods;
+  for (const analysis::Mode& mode :
+       analysis::modal_analysis(analysis.tangent(), analysis.mass(), analysis.dof_map(), modes))
+    periods.push_back(mode.period);
+  return periods;
+}
 
 FrameRunResult run_time_history(FrameModel& frame,
                                 const std::vector<GroundAcceleration>& components,
@@ -338,12 +363,7 @@ FrameRunResult run_time_history(FrameModel& frame,
   const double dt = options.dt > 0.0 ? options.dt : components.front().dt;
   result.duration = record_duration + options.free_vibration;
 
-  analysis::TransientSettings settings;
-  settings.integrator = options.integrator == Integrator::hht ? analysis::TimeIntegrator::hht
-                                                              : analysis::TimeIntegrator::newmark;
-  settings.hht_alpha = options.integrator == Integrator::hht ? options.hht_alpha : 0.0;
-  analysis::TransientAnalysis analysis(
-      *frame.model, model::DofMap::build(*frame.model, frame.dimension), settings);
+  analysis::TransientAnalysis analysis = implicit_analysis_of(frame, options);
 
   // Gravity, held during the dynamic run.
   const analysis::TransientStepReport gravity =

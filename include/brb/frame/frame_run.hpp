@@ -89,6 +89,12 @@ struct FrameRunResult {
   std::map<std::string, History> histories; ///< only those asked
 };
 
+/// The periods (s) of the first `modes` modes of `frame` in its gravity state (gravity applied
+/// as run_time_history applies it): e.g. T1 for an intensity measure. Throws
+/// std::runtime_error when the gravity load does not converge. The elements are left in the
+/// gravity state: build a fresh frame for a time-history run.
+std::vector<double> gravity_periods(FrameModel& frame, const FrameRunOptions& options, int modes);
+
 /// Runs `frame` under the ground motion components (one per options.directions entry).
 /// The frame's elements are left in the final state.
 FrameRunResult run_time_history(FrameModel& frame,
