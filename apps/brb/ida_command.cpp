@@ -236,6 +236,32 @@ int run_ida_command(const IdaCommand& command, std::ostream& report, std::ostrea
   report << "  " << points.size() << " runs (" << collapses << " collapsed), "
          << std::setprecision(3) << description.wall_time << " s; outputs in "
          << command.output_directory.string() << "\n";
+  // the headline numbers, from the summary just written
+  const nlohmann::json summary =
+      nlohmann::json::parse(io::read_text_file(command.output_directory / "summary.json"));
+  for (const nlohmann::json& record : summary["records"]) {
+    if (!record.contains("collapse_intensity_g"))
+      continue;
+    report << "  " << record["name"].get<std::string>() << ": "
+           << (record["censored"].get<bool>() ? "no collapse up to " : "collapse at ")
+           << std::setprecision(3) << record["collapse_intensity_g"].get<double>() << " g";
+    if (!record["censored"].get<bool>() && !record["bracket_resolved"].get<bool>())
+      report << " (above " << record["highest_survival_g"].get<double>()
+             << " g; the run budget ended the bisection)";
+    report << "\n";
+  }
+  const nlohmann::json& fragility = summary["fragility"];
+  if (fragility.is_null()) {
+    report << "  " << summary.value("fragility_note", "no fragility") << "\n";
+  } else {
+    report << "  collapse fragility: median " << std::setprecision(3)
+           << fragility["median_g"].get<double>() << " g, dispersion "
+           << fragility["dispersion"].get<double>();
+    if (fragility.contains("collapse_margin_ratio"))
+      report << "; CMR " << fragility["collapse_margin_ratio"].get<double>() << " for S_MT "
+             << fragility["mce_intensity_g"].get<double>() << " g";
+    report << "\n";
+  }
   return kCompleted;
 }
 

@@ -126,6 +126,16 @@ void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& s
       capacities.push_back(capacity);
       record["collapse_intensity_g"] = capacity.intensity;
       record["censored"] = capacity.censored;
+      // the collapse bracket: the highest survival below the lowest collapse, and whether
+      // the bisection narrowed it to the resolution before the run budget ran out
+      double survival = 0.0;
+      for (const CurvePoint& point : curves[r])
+        if (!point.collapsed && (capacity.censored || point.intensity < capacity.intensity))
+          survival = std::max(survival, point.intensity);
+      record["highest_survival_g"] = survival;
+      record["bracket_resolved"] =
+          !capacity.censored &&
+          capacity.intensity - survival <= study.settings().trace.resolution * (1.0 + 1e-12);
     }
     records.push_back(record);
   }
