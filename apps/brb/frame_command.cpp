@@ -143,18 +143,12 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
     options.dt = motion.dt;
   frame::BraceOverride braces = frame::BraceOverride::none;
   if (command.braces) {
-    const std::string& name = *command.braces;
-    if (name == "elastic")
-      braces = frame::BraceOverride::elastic;
-    else if (name == "truss")
-      braces = frame::BraceOverride::truss;
-    else if (name == "full")
-      braces = frame::BraceOverride::full;
-    else if (name == "auto")
-      braces = frame::BraceOverride::automatic;
-    else
+    const auto named = frame::brace_override_named(*command.braces);
+    if (!named)
       throw io::InputError("command line", "--braces",
-                           "must be elastic, truss, full or auto (got \"" + name + "\")");
+                           "must be elastic, truss, full or auto (got \"" + *command.braces +
+                               "\")");
+    braces = *named;
   }
   check_output_directory(command.output_directory);
   frame::FrameModel frame = frame::build_frame(spec, command.model.string(), braces);

@@ -27,14 +27,8 @@ constexpr int kInvalidInput = 2;
 frame::BraceOverride brace_override(const std::optional<std::string>& name) {
   if (!name)
     return frame::BraceOverride::none;
-  if (*name == "elastic")
-    return frame::BraceOverride::elastic;
-  if (*name == "truss")
-    return frame::BraceOverride::truss;
-  if (*name == "full")
-    return frame::BraceOverride::full;
-  if (*name == "auto")
-    return frame::BraceOverride::automatic;
+  if (const auto braces = frame::brace_override_named(*name))
+    return *braces;
   throw io::InputError("command line", "--braces",
                        "must be elastic, truss, full or auto (got \"" + *name + "\")");
 }

@@ -303,6 +303,31 @@ FrameRunOptions run_options_of(const model::FrameSpec& spec) {
   return options;
 }
 
+std::optional<BraceOverride> brace_override_named(std::string_view text) {
+  for (const BraceOverride braces : {BraceOverride::elastic, BraceOverride::truss,
+                                     BraceOverride::full, BraceOverride::automatic}) {
+    if (brace_override_name(braces) == text)
+      return braces;
+  }
+  return std::nullopt;
+}
+
+std::string_view brace_override_name(BraceOverride braces) {
+  switch (braces) {
+  case BraceOverride::none:
+    return "none";
+  case BraceOverride::elastic:
+    return "elastic";
+  case BraceOverride::truss:
+    return "truss";
+  case BraceOverride::full:
+    return "full";
+  case BraceOverride::automatic:
+    return "auto";
+  }
+  return "none";
+}
+
 FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
                        BraceOverride braces) {
   return Builder(spec, source, braces).build();

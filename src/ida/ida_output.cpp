@@ -175,7 +175,6 @@ void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& s
     fragility_note = std::string("no fragility: ") + error.what();
   }
 
-  const HuntFillSettings& trace = study.settings().trace;
   nlohmann::json summary = {{"model", description.model_file},
                             {"suite", description.suite_file},
                             {"intensity_measure", study.measure_label()},
@@ -183,13 +182,7 @@ void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& s
                             {"period", study.period()},
                             {"damping_ratio", study.settings().damping_ratio},
                             {"drift_limit", study.drift_limit()},
-                            {"hunt_and_fill",
-                             {{"first_intensity", trace.first_intensity},
-                              {"step", trace.step},
-                              {"step_growth", trace.step_growth},
-                              {"resolution", trace.resolution},
-                              {"max_runs", trace.max_runs},
-                              {"max_intensity", trace.max_intensity}}},
+                            {"hunt_and_fill", to_json(study.settings().trace)},
                             {"runs", points.size()},
                             {"collapses_drift", drift_collapses},
                             {"collapses_numerical", numerical_collapses},

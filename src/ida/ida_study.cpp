@@ -29,23 +29,16 @@ std::string measure_name(IntensityMeasure measure) {
   return measure == IntensityMeasure::sa_t1 ? "sa_t1" : "pga";
 }
 
-std::string brace_override_name(frame::BraceOverride braces) {
-  switch (braces) {
-  case frame::BraceOverride::none:
-    return "as in the model";
-  case frame::BraceOverride::elastic:
-    return "elastic";
-  case frame::BraceOverride::truss:
-    return "truss";
-  case frame::BraceOverride::full:
-    return "full";
-  case frame::BraceOverride::automatic:
-    return "auto";
-  }
-  return "";
-}
-
 } // namespace
+
+nlohmann::json to_json(const HuntFillSettings& trace) {
+  return {{"first_intensity", trace.first_intensity},
+          {"step", trace.step},
+          {"step_growth", trace.step_growth},
+          {"resolution", trace.resolution},
+          {"max_runs", trace.max_runs},
+          {"max_intensity", trace.max_intensity}};
+}
 
 std::string content_digest(std::string_view text) {
   std::uint64_t hash = 14695981039346656037ULL; // FNV-1a offset basis and prime (64-bit)
@@ -120,7 +113,6 @@ nlohmann::json IdaStudy::header(const std::string& model_text,
                        {"samples_digest", content_digest(samples)},
                        {"intensity", record_intensity_[k]}});
   }
-  const HuntFillSettings& trace = settings_.trace;
   return {{"journal", "brb ida"},
           {"version", 1},
           {"model_digest", content_digest(model_text)},
@@ -129,14 +121,8 @@ nlohmann::json IdaStudy::header(const std::string& model_text,
           {"period", period_},
           {"damping_ratio", settings_.damping_ratio},
           {"drift_limit", run_options_.drift_limit},
-          {"braces", brace_override_name(settings_.braces)},
-          {"trace",
-           {{"first_intensity", trace.first_intensity},
-            {"step", trace.step},
-            {"step_growth", trace.step_growth},
-            {"resolution", trace.resolution},
-            {"max_runs", trace.max_runs},
-            {"max_intensity", trace.max_intensity}}},
+          {"braces", frame::brace_override_name(settings_.braces)},
+          {"trace", to_json(settings_.trace)},
           {"records", records}};
 }
 

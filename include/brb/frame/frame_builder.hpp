@@ -7,7 +7,9 @@
 #include "brb/frame/frame_run.hpp"
 #include "brb/model/frame_spec.hpp"
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace brb::frame {
 
@@ -15,6 +17,11 @@ namespace brb::frame {
 /// (the benchmark) and quick studies. `elastic`: an elastic truss of the brace's series
 /// axial stiffness (a frame that never yields in its braces).
 enum class BraceOverride { none, elastic, truss, full, automatic };
+
+/// The override named `text` ("elastic", "truss", "full", "auto"); nothing for another text.
+std::optional<BraceOverride> brace_override_named(std::string_view text);
+/// "elastic", "truss", "full", "auto"; "none" for none (the model's own fidelities).
+std::string_view brace_override_name(BraceOverride braces);
 
 /// `source` names the model file in errors: an element the element layer rejects raises an
 /// io::InputError at "/elements/<index>" with the element's message.

@@ -36,12 +36,6 @@ struct IdaSettings {
   frame::BraceOverride braces = frame::BraceOverride::none;
 };
 
-/// The settings and inputs that decide the results, as JSON: the journal header.
-struct IdaInputs {
-  std::string model_file;
-  std::string suite_file;
-};
-
 class IdaStudy {
 public:
   /// Reads nothing: the frame specification and suite are given. Computes T1 (gravity and
@@ -85,6 +79,9 @@ private:
   std::vector<double> record_intensity_;
   std::vector<std::string> story_names_;
 };
+
+/// The hunt-and-fill settings as JSON (journal header, summary.json).
+nlohmann::json to_json(const HuntFillSettings& trace);
 
 /// FNV-1a 64-bit digest of a text as 16 hex digits: identifies input files in the journal.
 std::string content_digest(std::string_view text);
