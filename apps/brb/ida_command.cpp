@@ -152,6 +152,8 @@ int run_ida_command(const IdaCommand& command, std::ostream& report, std::ostrea
 
   // Every input is read and checked before the first run (on every rank: the same files).
   const ida::IdaSettings settings = settings_of(command);
+  if (command.jobs < 0)
+    throw io::InputError("command line", "--jobs", "must be >= 1 (or 0: every core)");
   const std::string model_text = io::read_text_file(command.model);
   const std::string suite_text = io::read_text_file(command.suite);
   model::FrameSpec spec = io::read_frame(command.model);

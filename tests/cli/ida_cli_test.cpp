@@ -257,8 +257,10 @@ TEST_F(IdaCli, AnExistingJournalNeedsResume) {
 TEST_F(IdaCli, ThreeMpiRanksGiveTheThreadedPoints) {
   const fs::path threads = scratch_.path() / "threads", ranks = scratch_.path() / "ranks";
   ASSERT_EQ(ida(threads, "--jobs 2").exit_code, 0);
-  // root in containers and CI: OpenMPI refuses to run as root unless told
-  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " +
+  // root in containers and CI: OpenMPI refuses to run as root unless told; containers often
+  // forbid the cross-memory attach of its shared-memory transport: plain copies instead
+  const std::string command = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                              "OMPI_MCA_btl_vader_single_copy_mechanism=none " +
                               shell_quoted(BRB_MPIEXEC) + " --oversubscribe -np 3 " +
                               shell_quoted(BRB_CLI_PATH) + " ida " + arguments(ranks) + " > " +
                               shell_quoted((scratch_.path() / "mpi.log").string()) + " 2>&1";
