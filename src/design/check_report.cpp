@@ -96,6 +96,7 @@ nlohmann::ordered_json check_json(const CheckSpec& check, const CheckResult& res
   sequence["estimated_extra_cycles"] = q.estimated_extra_cycles;
   sequence["extra_cycles"] = q.extra_cycles;
   sequence["cumulative_target_reached"] = q.cumulative_target_reached;
+  sequence["stopped_at_failure"] = q.stopped_at_failure;
   sequence["max_step"] = check.max_step * result.yield_deformation;
   out["sequence"] = sequence;
 

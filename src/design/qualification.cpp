@@ -86,9 +86,25 @@ QualificationResult run_qualification(model::BraceModel& brace, const Qualificat
 
   analysis::CyclicTest test(brace, input.settings, /*record_history=*/true);
   std::vector<double> amplitudes;
-  bool running = follow_protocol(
-      test, io::cyclic_protocol("K3.4c steps 1-5", result.sequence.groups, input.max_step), 0,
-      amplitudes);
+  // One cycle at a time, so that the test stops at the end of the cycle in which the brace
+  // failed (fracture, global buckling, casing failure: K3.8b), as a laboratory test ends.
+  const auto brace_failed = [&test]() {
+    const analysis::BraceIndicators& flags = test.indicators();
+    return flags.core_fracture || flags.global_buckling || flags.casing_failure;
+  };
+  bool running = true;
+  for (const io::CycleGroup& group : result.sequence.groups) {
+    const io::LoadingProtocol one_cycle =
+        io::cyclic_protocol("K3.4c", {{group.amplitude, 1}}, input.max_step);
+    for (int c = 0; c < group.cycles && running; ++c) {
+      if (brace_failed()) {
+        result.stopped_at_failure = true;
+        running = false;
+        break;
+      }
+      running = follow_protocol(test, one_cycle, static_cast<int>(amplitudes.size()), amplitudes);
+    }
+  }
   // Step 6: one cycle at 1.5 Delta_bm at a time while the brace's own cumulative inelastic
   // deformation is short of the target (with a guard against a brace that stops yielding).
   const int most_extra = input.extra_cycle_factor * result.estimated_extra_cycles + 10;
@@ -97,6 +113,10 @@ QualificationResult run_qualification(model::BraceModel& brace, const Qualificat
   while (running &&
          test.indicators().cumulative_inelastic_deformation < result.sequence.cumulative_target &&
          result.extra_cycles < most_extra) {
+    if (brace_failed()) {
+      result.stopped_at_failure = true;
+      break;
+    }
     running = follow_protocol(test, extra_cycle, static_cast<int>(amplitudes.size()), amplitudes);
     if (running)
       ++result.extra_cycles;
@@ -170,9 +190,17 @@ QualificationResult run_qualification(model::BraceModel& brace, const Qualificat
 
   // K3.8 acceptance criteria.
   std::vector<Criterion>& criteria = result.criteria;
-  criteria.push_back(
-      flag_criterion("completion", "the whole sequence was run (the solver passed every step)",
-                     !run.completed, run.completed ? "completed" : "stopped: " + run.stop_reason));
+  const bool sequence_run = run.completed && !result.stopped_at_failure;
+  std::string completion_note = "completed";
+  if (!run.completed) {
+    completion_note = "the solver stopped: " + run.stop_reason;
+  } else if (result.stopped_at_failure) {
+    completion_note =
+        "stopped after cycle " + std::to_string(run.cycles.size()) + ": the brace failed (K3.8b)";
+  }
+  criteria.push_back(flag_criterion(
+      "completion", "the whole sequence was run (the solver passed every step, the brace held)",
+      !sequence_run, completion_note));
   std::ostringstream cid_note;
   cid_note << result.extra_cycles << " cycles at 1.5 Delta_bm added (estimate "
            << result.estimated_extra_cycles << ")";

@@ -69,6 +69,9 @@ struct QualificationResult {
   int estimated_extra_cycles = 0; ///< elastic-perfectly plastic estimate (loading_sequence.hpp)
   int extra_cycles = 0;           ///< step-6 cycles the brace needed (completed ones)
   bool cumulative_target_reached = false;
+  /// The sequence was cut short at the end of the cycle in which the brace failed (core
+  /// fracture, global buckling or casing failure), as a laboratory test ends there.
+  bool stopped_at_failure = false;
   analysis::CyclicTestResult test; ///< with its element history
   std::vector<QualificationCycle> cycles;
   double beta = 1.0;  ///< design value: largest over the adjustment range, not less than 1.0
