@@ -215,14 +215,14 @@ QualificationResult run_qualification(model::BraceModel& brace, const Qualificat
       "tolerance for round-off and high-mode snap-throughs (project choice)"));
   criteria.push_back(flag_criterion("K3.8b fracture", "no fracture of the core",
                                     run.indicators.core_fracture,
-                                    "a core fiber's damage reached 0.9"));
-  criteria.push_back(flag_criterion("K3.8b instability", "no brace instability (global buckling)",
-                                    run.indicators.global_buckling,
-                                    "lateral deflection of the casing (or core) > L_y / 250"));
-  criteria.push_back(flag_criterion("K3.8b casing", "no casing failure",
-                                    run.indicators.casing_failure,
-                                    "mortar bearing damage >= 0.9 under a station; end "
-                                    "connections are not modelled as able to fail"));
+                                    "raised when a core fiber's damage reaches 0.9"));
+  criteria.push_back(flag_criterion(
+      "K3.8b instability", "no brace instability (global buckling)", run.indicators.global_buckling,
+      "raised when the casing (or core) deflects laterally by more than L_y / 250"));
+  criteria.push_back(
+      flag_criterion("K3.8b casing", "no casing failure", run.indicators.casing_failure,
+                     "raised when the mortar bearing damage under a station reaches 0.9; end "
+                     "connections are not modelled as able to fail"));
   criteria.push_back(bound_criterion("K3.8c tension", "Tmax / Pysc in every cycle beyond Delta_by",
                                      min_tension_ratio, input.edition.minimum_strength_ratio, true,
                                      "smallest over the cycles beyond Delta_by"));

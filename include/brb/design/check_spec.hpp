@@ -46,7 +46,6 @@ struct CheckSpec {
   std::optional<double> beta_limit_override;
   double max_step = 0.1; ///< multiples of Delta_by: the largest deformation step of the test
   std::optional<DriftCapacitySpec> drift_capacity;
-  std::string drift_capacity_note; ///< e.g. why it is not computed
 
   /// The design story drift (mm) as given or from the elastic analysis (Cd delta_xe / Ie),
   /// before the 1 % floor.
