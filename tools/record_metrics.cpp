@@ -95,17 +95,36 @@ int run(int argc, char** argv) {
   out["scored_cycles"] = comparison.scored_cycles;
   out["max_cycle_energy_error"] = comparison.max_cycle_energy_error;
   out["max_beta_difference"] = comparison.max_beta_difference;
+  // AISC 341 F4.2a from the scored cycles: beta = Pmax / Tmax and Tmax (omega = Tmax / Pysc),
+  // the largest over the cycles, for the test and for the model at the same points.
   nlohmann::ordered_json per_cycle = nlohmann::ordered_json::array();
+  double test_beta = 0.0, model_beta = 0.0, test_tmax = 0.0, model_tmax = 0.0;
   for (const auto& cycle : comparison.cycles) {
     if (!cycle.scored)
       continue;
+    const auto first = test_force.begin() + static_cast<std::ptrdiff_t>(cycle.span.first);
+    const auto last = test_force.begin() + static_cast<std::ptrdiff_t>(cycle.span.last) + 1;
+    const double cycle_test_tmax = *std::max_element(first, last);
+    const double cycle_model_tmax =
+        *std::max_element(model_force.begin() + (first - test_force.begin()),
+                          model_force.begin() + (last - test_force.begin()));
+    test_beta = std::max(test_beta, cycle.test_beta);
+    model_beta = std::max(model_beta, cycle.model_beta);
+    test_tmax = std::max(test_tmax, cycle_test_tmax);
+    model_tmax = std::max(model_tmax, cycle_model_tmax);
     per_cycle.push_back({{"amplitude_mm", std::max(std::abs(deformation[cycle.span.first]),
                                                    std::abs(deformation[cycle.span.last]))},
                          {"test_energy", cycle.test_energy},
                          {"model_energy", cycle.model_energy},
                          {"test_beta", cycle.test_beta},
-                         {"model_beta", cycle.model_beta}});
+                         {"model_beta", cycle.model_beta},
+                         {"test_tmax", cycle_test_tmax},
+                         {"model_tmax", cycle_model_tmax}});
   }
+  out["largest_test_beta"] = test_beta;
+  out["largest_model_beta"] = model_beta;
+  out["largest_test_tmax"] = test_tmax;
+  out["largest_model_tmax"] = model_tmax;
   out["scored"] = per_cycle;
   std::cout << out.dump(1) << "\n";
   return 0;

@@ -1,6 +1,7 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
 #include "calibrate_command.hpp"
+#include "check_command.hpp"
 #include "cyclic_command.hpp"
 #include "frame_command.hpp"
 #include "ida_command.hpp"
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
   const CLI::App* calibrate = brb::cli::add_calibrate_command(app, calibrate_command);
   brb::cli::SpectrumCommand spectrum_command;
   const CLI::App* spectrum = brb::cli::add_spectrum_command(app, spectrum_command);
+  brb::cli::CheckCommand check_command;
+  const CLI::App* check = brb::cli::add_check_command(app, check_command);
 
   try {
     app.parse(argc, argv);
@@ -70,6 +73,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_calibrate_command(calibrate_command, std::cout);
     if (spectrum->parsed())
       return brb::cli::run_spectrum_command(spectrum_command, std::cout);
+    if (check->parsed())
+      return brb::cli::run_check_command(check_command, std::cout, std::cerr);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

@@ -7,8 +7,10 @@
 #include "brb/analysis/static_analysis.hpp"
 #include "brb/model/brace_model.hpp"
 
+#include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace brb::analysis {
@@ -58,6 +60,44 @@ struct CyclicTestResult {
   int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
   BraceIndicators indicators;
   std::vector<ElementHistoryPoint> history; ///< one per step, when asked for
+};
+
+/// A cyclic test that can be continued: each follow() drives the brace on from where the
+/// last one stopped, so a caller can decide the next cycles from the response so far (the
+/// AISC 341 K3.4c sequence adds cycles at 1.5 Delta_bm until the cumulative inelastic
+/// deformation reaches its target). run_cyclic_test is one follow() over a whole history.
+class CyclicTest {
+public:
+  /// `brace` must outlive the test; its model is driven at its end node along x.
+  explicit CyclicTest(model::BraceModel& brace, NewtonSettings settings = {},
+                      bool record_history = false);
+  CyclicTest(const CyclicTest&) = delete;
+  CyclicTest& operator=(const CyclicTest&) = delete;
+
+  /// Drives the brace through `deformation` (mm, the points after the current state, in
+  /// order); `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
+  /// amplitude of cycle c (the whole list so far, cycles numbered over the whole test). A
+  /// cycle whose last point is the last of `deformation` counts as completed, so give whole
+  /// cycles. Returns false (and says why in result().stop_reason) at the first step the
+  /// solver cannot pass; once stopped, further calls do nothing and return false.
+  bool follow(std::span<const double> deformation, std::span<const int> cycle,
+              std::span<const double> cycle_amplitude);
+
+  /// Indicators of the brace up to the last converged step.
+  const BraceIndicators& indicators() const { return tracker_.indicators(); }
+  /// The result so far (solver statistics and energy balance up to the last step).
+  CyclicTestResult result() const;
+
+private:
+  double core_strain() const;
+
+  model::BraceModel* brace_;
+  StaticAnalysis analysis_;
+  BraceIndicatorTracker tracker_;
+  bool record_history_ = false;
+  std::optional<std::pair<int, int>> yielding_ends_; ///< for the mean core strain
+  CycleMetrics current_;
+  CyclicTestResult result_;
 };
 
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
