@@ -10,6 +10,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace brb::solid {
 
@@ -71,64 +72,110 @@ SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_
   trial_strain_ = committed_stress_;
 }
 
+template <class Law> void SolidModel<Law>::set_threads(int threads) {
+  if (threads < 1)
+    throw std::invalid_argument("solid model: threads must be >= 1 (got " +
+                                std::to_string(threads) + ")");
+  threads_ = threads;
+}
+
+template <class Law>
+bool SolidModel<Law>::evaluate_element(std::size_t e, const Eigen::Matrix3Xd& u,
+                                       bool with_tangent) {
+  const HexConnectivity& nodes = mesh_.elements[e];
+  const Hex8Reference& reference = references_[e];
+  const NodeMatrix element_displacement = gather(nodes, u);
+  const Eigen::Matrix3d H = hex8_displacement_gradient(reference, element_displacement);
+  const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
+  element_jacobian_[e] = F.determinant();
+  if (!(element_jacobian_[e] > 0.0))
+    return false;
+  const material::Vector6 strain = green_lagrange_strain(H);
+  const auto response = laws_[e].evaluate(committed_states_[e], strain);
+  if (!response.stress.allFinite())
+    return false;
+  trial_states_[e] = response.state;
+  trial_stress_[e] = response.stress;
+  trial_strain_[e] = strain;
+  // trapezoidal work of the centre stress over the increment from the committed state
+  element_work_[e] = 0.5 * reference.volume *
+                     (committed_stress_[e] + response.stress).dot(strain - committed_strain_[e]);
+  NodeMatrix& force = element_force_[e];
+  force.setZero();
+  ElementMatrix* tangent = nullptr;
+  if (with_tangent) {
+    tangent = &element_tangent_[e];
+    tangent->setZero();
+  }
+  add_hex8_centre_response(reference, F, response.stress, response.tangent, force, tangent);
+  element_hourglass_[e] = add_hex8_hourglass_response(reference, hourglass_[e], F,
+                                                      element_displacement, force, tangent);
+  return true;
+}
+
 template <class Law>
 bool SolidModel<Law>::evaluate(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
                                Eigen::SparseMatrix<double>* tangent, std::string& reason) {
+  const std::size_t n = mesh_.elements.size();
+  const bool with_tangent = tangent != nullptr;
+  element_force_.resize(n);
+  if (with_tangent)
+    element_tangent_.resize(n);
+  element_work_.assign(n, 0.0);
+  element_hourglass_.assign(n, 0.0);
+  element_jacobian_.assign(n, 0.0);
+  element_failed_.assign(n, 0);
+  const Eigen::Matrix3Xd u =
+      Eigen::Map<const Eigen::Matrix3Xd>(displacement.data(), 3, node_count());
+  const auto block = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+      element_failed_[e] = evaluate_element(e, u, with_tangent) ? 0 : 1;
+  };
+  const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(threads_), n);
+  if (threads <= 1) {
+    block(0, n);
+  } else {
+    std::vector<std::jthread> pool;
+    pool.reserve(threads - 1);
+    for (std::size_t t = 1; t < threads; ++t)
+      pool.emplace_back(block, n * t / threads, n * (t + 1) / threads);
+    block(0, n / threads);
+  } // the pool joins here
+
+  // the first failed element, in element order (the same for every thread count)
+  for (std::size_t e = 0; e < n; ++e) {
+    if (!element_failed_[e])
+      continue;
+    reason = !(element_jacobian_[e] > 0.0)
+                 ? "element " + std::to_string(e) +
+                       " inverted (det F = " + std::to_string(element_jacobian_[e]) + ")"
+                 : "element " + std::to_string(e) + ": the stress is not finite";
+    return false;
+  }
+
+  // nodal sums in element order
   const int dofs = dof_count();
   force.setZero(dofs);
+  trial_energy_ = {committed_energy_.internal, 0.0};
   std::vector<Eigen::Triplet<double>> triplets;
-  if (tangent != nullptr)
-    triplets.reserve(static_cast<std::size_t>(576) * mesh_.elements.size());
-  const Eigen::Map<const Eigen::Matrix3Xd> u(displacement.data(), 3, node_count());
-  trial_energy_ = {};
-  ElementMatrix element_tangent;
-  for (std::size_t e = 0; e < mesh_.elements.size(); ++e) {
+  if (with_tangent)
+    triplets.reserve(static_cast<std::size_t>(576) * n);
+  for (std::size_t e = 0; e < n; ++e) {
     const HexConnectivity& nodes = mesh_.elements[e];
-    const Hex8Reference& reference = references_[e];
-    const NodeMatrix element_displacement = gather(nodes, u);
-    const Eigen::Matrix3d H = hex8_displacement_gradient(reference, element_displacement);
-    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
-    const double jacobian = F.determinant();
-    if (!(jacobian > 0.0)) {
-      reason =
-          "element " + std::to_string(e) + " inverted (det F = " + std::to_string(jacobian) + ")";
-      return false;
-    }
-    const material::Vector6 strain = green_lagrange_strain(H);
-    const auto response = laws_[e].evaluate(committed_states_[e], strain);
-    if (!response.stress.allFinite()) {
-      reason = "element " + std::to_string(e) + ": the stress is not finite";
-      return false;
-    }
-    trial_states_[e] = response.state;
-    trial_stress_[e] = response.stress;
-    trial_strain_[e] = strain;
-    // trapezoidal work of the centre stress over the increment from the committed state
-    trial_energy_.internal +=
-        0.5 * reference.volume *
-        (committed_stress_[e] + response.stress).dot(strain - committed_strain_[e]);
-    NodeMatrix element_force = NodeMatrix::Zero();
-    ElementMatrix* k = nullptr;
-    if (tangent != nullptr) {
-      element_tangent.setZero();
-      k = &element_tangent;
-    }
-    add_hex8_centre_response(reference, F, response.stress, response.tangent, element_force, k);
-    trial_energy_.hourglass += add_hex8_hourglass_response(reference, hourglass_[e], F,
-                                                           element_displacement, element_force, k);
+    trial_energy_.internal += element_work_[e];
+    trial_energy_.hourglass += element_hourglass_[e];
     for (int a = 0; a < 8; ++a)
-      force.segment<3>(3 * nodes[a]) += element_force.col(a);
-    if (tangent != nullptr) {
+      force.segment<3>(3 * nodes[a]) += element_force_[e].col(a);
+    if (with_tangent) {
+      const ElementMatrix& k = element_tangent_[e];
       for (int a = 0; a < 8; ++a)
         for (int i = 0; i < 3; ++i)
           for (int c = 0; c < 8; ++c)
             for (int j = 0; j < 3; ++j)
-              triplets.emplace_back(3 * nodes[a] + i, 3 * nodes[c] + j,
-                                    element_tangent(3 * a + i, 3 * c + j));
+              triplets.emplace_back(3 * nodes[a] + i, 3 * nodes[c] + j, k(3 * a + i, 3 * c + j));
     }
   }
-  trial_energy_.internal += committed_energy_.internal;
-  if (tangent != nullptr) {
+  if (with_tangent) {
     tangent->resize(dofs, dofs);
     tangent->setFromTriplets(triplets.begin(), triplets.end());
   }

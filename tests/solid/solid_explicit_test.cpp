@@ -2,6 +2,7 @@
 // its first axial mode against the wave speed), energy conservation in free vibration, and
 // quasi-static loading (kinetic energy < 5 % of internal energy, static force, energy balance).
 #include "brb/material/isotropic_elastic_3d.hpp"
+#include "brb/material/steel_damage_plasticity_3d.hpp"
 #include "brb/solid/solid_explicit.hpp"
 
 #include <gtest/gtest.h>
@@ -140,6 +141,56 @@ TEST(SolidExplicit, RefusesAnUnstableStep) {
   loading.prescribed = bar.supports();
   const double stable = bar.model.stable_time_step(0.9);
   EXPECT_THROW(SolidExplicit<material::IsotropicElastic3D>(bar.model, loading, {0.9, 1.1 * stable}),
+               std::invalid_argument);
+}
+
+} // namespace
+} // namespace brb::solid
+
+namespace brb::solid {
+namespace {
+
+TEST(SolidExplicit, ResultsDoNotDependOnTheThreadCount) {
+  // The element loop writes per-element slots and sums them in element order: the run must
+  // be bitwise the same on 1, 2 and 3 threads (a steel bar pulled past yield, so the states
+  // matter too).
+  material::SteelParameters steel;
+  steel.youngs_modulus = kE;
+  steel.poissons_ratio = kNu;
+  steel.yield_stress = 355.0;
+  steel.kinematic_hardening = 21000.0;
+  const auto run = [&](int threads) {
+    const StructuredPrismMesh prism(Eigen::Vector3d(kLength, kSide, kSide), {20, 2, 2});
+    SolidModel<material::SteelDamagePlasticity3D> model(
+        prism.mesh(), [&](double lc) { return material::SteelDamagePlasticity3D(steel, lc); },
+        kDensity);
+    model.set_threads(threads);
+    SolidLoading loading;
+    for (int n : prism.face_nodes(PrismFace::x_min))
+      loading.prescribed.add(n, 0, 0.0);
+    loading.prescribed.add(prism.node_index(0, 0, 0), 1, 0.0);
+    loading.prescribed.add(prism.node_index(0, 0, 0), 2, 0.0);
+    loading.prescribed.add(prism.node_index(0, 2, 0), 2, 0.0);
+    for (int n : prism.face_nodes(PrismFace::x_max))
+      loading.prescribed.add(n, 0, 5e-3 * kLength);
+    const double duration = 4.0 * 4.0 * kLength / std::sqrt(kE / kDensity);
+    loading.history = [duration](double t) { return smooth_ramp(t, duration); };
+    SolidExplicit<material::SteelDamagePlasticity3D> solver(model, loading);
+    std::string failure;
+    EXPECT_TRUE(solver.run_to(duration, failure)) << failure;
+    EXPECT_GT(model.states()[0].equivalent_plastic_strain, 1e-3);
+    return std::make_pair(solver.displacement(), solver.energy().internal);
+  };
+  const auto one = run(1);
+  for (const int threads : {2, 3}) {
+    const auto many = run(threads);
+    EXPECT_TRUE(one.first == many.first) << threads << " threads";
+    EXPECT_EQ(one.second, many.second) << threads << " threads";
+  }
+  EXPECT_THROW(SolidModel<material::IsotropicElastic3D>(
+                   StructuredPrismMesh(Eigen::Vector3d(1, 1, 1), {1, 1, 1}).mesh(),
+                   [](double) { return material::IsotropicElastic3D(kE, kNu); }, kDensity)
+                   .set_threads(0),
                std::invalid_argument);
 }
 

@@ -8,6 +8,11 @@
 // Degrees of freedom: the displacements of the nodes, node-major (3 n + i, i = x, y, z).
 // Trial / commit as the laws: evaluate() changes only the trial states; commit() accepts
 // them (a failed Newton iteration just evaluates again).
+//
+// Threads: evaluate() shares the elements among set_threads() threads in contiguous blocks;
+// each element writes only its own slots (force, tangent, energies), and the nodal sums are
+// then made in element order by one thread, so the results are bitwise the same for every
+// thread count.
 #pragma once
 
 #include "brb/solid/hex8.hpp"
@@ -52,6 +57,10 @@ public:
   /// Accepts the last evaluate(): states, strains, stresses and the internal work.
   void commit();
 
+  /// Threads of the element loop (>= 1; default 1). Throws std::invalid_argument below 1.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+
   /// Second Piola-Kirchhoff stress and Green-Lagrange strain (Voigt) of each element, as of
   /// the last evaluate().
   const std::vector<material::Vector6>& trial_stress() const { return trial_stress_; }
@@ -70,7 +79,12 @@ public:
   double stable_time_step(double safety) const;
 
 private:
+  /// The element's trial response into its own slots; false when it inverts or its stress is
+  /// not finite (recorded in element_jacobian_ / element_finite_).
+  bool evaluate_element(std::size_t e, const Eigen::Matrix3Xd& displacement, bool with_tangent);
+
   HexMesh mesh_;
+  int threads_ = 1;
   double density_ = 0.0;
   std::vector<Law> laws_;
   std::vector<Hex8Reference> references_;
@@ -80,6 +94,11 @@ private:
   std::vector<material::Vector6> committed_stress_, trial_stress_;
   std::vector<material::Vector6> committed_strain_, trial_strain_;
   SolidEnergy committed_energy_, trial_energy_;
+  // per-element results of the last evaluate()
+  std::vector<NodeMatrix> element_force_;
+  std::vector<ElementMatrix> element_tangent_;
+  std::vector<double> element_work_, element_hourglass_, element_jacobian_;
+  std::vector<char> element_failed_;
 };
 
 } // namespace brb::solid
