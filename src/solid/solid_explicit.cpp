@@ -2,6 +2,7 @@
 #include "brb/solid/solid_explicit.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
+#include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_damage_plasticity_3d.hpp"
 
 #include <boost/numeric/odeint/algebra/default_operations.hpp>
@@ -183,5 +184,6 @@ template <class Law> bool SolidExplicit<Law>::run_to(double time, std::string& f
 
 template class SolidExplicit<material::IsotropicElastic3D>;
 template class SolidExplicit<material::SteelDamagePlasticity3D>;
+template class SolidExplicit<material::MortarDamage3D>;
 
 } // namespace brb::solid

@@ -1,6 +1,7 @@
 #include "brb/solid/solid_model.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
+#include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_damage_plasticity_3d.hpp"
 
 #include <Eigen/LU>
@@ -23,6 +24,10 @@ struct ElasticModuli {
 
 ElasticModuli elastic_moduli(const material::IsotropicElastic3D& law) {
   return {law.youngs_modulus(), law.poissons_ratio()};
+}
+
+ElasticModuli elastic_moduli(const material::MortarDamage3D& law) {
+  return {law.parameters().youngs_modulus, law.parameters().poissons_ratio};
 }
 
 ElasticModuli elastic_moduli(const material::SteelDamagePlasticity3D& law) {
@@ -209,5 +214,6 @@ template <class Law> double SolidModel<Law>::stable_time_step(double safety) con
 
 template class SolidModel<material::IsotropicElastic3D>;
 template class SolidModel<material::SteelDamagePlasticity3D>;
+template class SolidModel<material::MortarDamage3D>;
 
 } // namespace brb::solid

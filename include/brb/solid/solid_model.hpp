@@ -2,8 +2,8 @@
 // committed and trial material states, lumped masses and energies. The law is a template
 // parameter so the element loop calls the law directly (no virtual call per integration
 // point); the states and the reference geometry live in contiguous arrays, one entry per
-// element. Instantiated for material::IsotropicElastic3D and
-// material::SteelDamagePlasticity3D.
+// element. Instantiated for material::IsotropicElastic3D, material::SteelDamagePlasticity3D
+// and material::MortarDamage3D.
 //
 // Degrees of freedom: the displacements of the nodes, node-major (3 n + i, i = x, y, z).
 // Trial / commit as the laws: evaluate() changes only the trial states; commit() accepts
