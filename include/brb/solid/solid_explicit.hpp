@@ -1,0 +1,97 @@
+// Explicit central differences for a SolidModel: lumped (row-sum) mass, Boost.Odeint's
+// velocity Verlet (the central-difference method in velocity form, as in
+// analysis::ExplicitAnalysis; Belytschko, Liu, Moran, Box 6.1), on the free DOFs, with
+// prescribed displacements that follow a history in time (smooth_ramp for quasi-static
+// loading) and external nodal forces that follow another.
+//
+// Stable step: safety x min over elements of 2 / w_max, w_max from the Flanagan-Belytschko
+// element bound (hex8.hpp); the assembled mesh's highest frequency is not above the largest
+// element one (Irons' element eigenvalue theorem), so the bound holds for the mesh.
+//
+// Energy, per step: kinetic 1/2 v^T M v (free DOFs), internal work of the centre stresses
+// (SolidModel, trapezoidal in the strain) and stored hourglass energy; external work
+// trapezoidal in the displacements: the reactions (internal forces) of the prescribed DOFs
+// times their increments plus the external forces times the free DOFs' increments. The
+// balance W_ext = KE + IE + HG holds up to the central-difference error O(dt^2).
+#pragma once
+
+#include "brb/solid/solid_model.hpp"
+#include "brb/solid/solid_static.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace brb::solid {
+
+/// 0 at t <= 0, (1 - cos(pi t / T)) / 2 up to T, 1 after: a displacement history with zero
+/// velocity at both ends (no velocity jump, so no stress wave from the start of the loading).
+double smooth_ramp(double time, double duration);
+
+struct SolidExplicitSettings {
+  double stable_step_safety = 0.9; ///< on the element bound 2 / w_max
+  double time_step = 0.0;          ///< s; 0: the stable step (a larger one is refused)
+};
+
+/// Displacements u_d(t) = values_d x history(t) of the prescribed DOFs (history(0) = 0 for a
+/// start at rest) and external forces f(t) = load x load_history(t).
+struct SolidLoading {
+  PrescribedDisplacements prescribed;
+  std::function<double(double)> history = [](double) { return 1.0; };
+  Eigen::VectorXd load; ///< full DOF vector (N); empty: none
+  std::function<double(double)> load_history = [](double) { return 1.0; };
+};
+
+struct SolidExplicitEnergy {
+  double kinetic = 0.0;
+  double internal = 0.0;  ///< work of the centre stresses
+  double hourglass = 0.0; ///< stored hourglass energy
+  double external = 0.0;  ///< work of the reactions and external forces
+  /// |W_ext - KE - IE - HG| / max(W_ext, KE + IE + HG, 1e-30)
+  double relative_error() const;
+};
+
+template <class Law> class SolidExplicit {
+public:
+  /// Starts at rest from the model's committed state (zero displacement). Throws
+  /// std::invalid_argument for a time step above the stable one.
+  SolidExplicit(SolidModel<Law>& model, SolidLoading loading, SolidExplicitSettings settings = {});
+
+  /// Starts from displacement u0 and velocity v0 (full DOF vectors; the prescribed DOFs take
+  /// their history's values). The energies start from the state's stored energy as work done.
+  void set_initial_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity);
+
+  /// Steps up to `time` (s), the last step shortened to land on it. False, with `failure`,
+  /// when an element inverts or the state becomes non-finite (the committed state stays).
+  bool run_to(double time, std::string& failure);
+
+  double time() const { return time_; }
+  double time_step() const { return time_step_; }
+  double stable_time_step() const { return stable_step_; }
+  long steps() const { return steps_; }
+  const Eigen::VectorXd& displacement() const { return displacement_; }
+  const Eigen::VectorXd& velocity() const { return velocity_; }
+  /// Internal forces of the committed state (reactions on the prescribed DOFs).
+  const Eigen::VectorXd& internal_force() const { return force_; }
+  const SolidExplicitEnergy& energy() const { return energy_; }
+
+private:
+  bool advance(double dt, std::string& failure);
+  void fill_prescribed(double t, Eigen::VectorXd& full) const;
+
+  SolidModel<Law>& model_;
+  SolidLoading loading_;
+  std::vector<int> free_dofs_;
+  Eigen::VectorXd mass_; // free DOFs
+  double stable_step_ = 0.0;
+  double time_step_ = 0.0;
+  double time_ = 0.0;
+  long steps_ = 0;
+  Eigen::VectorXd displacement_, velocity_, force_; // full DOFs
+  Eigen::VectorXd acceleration_;                    // free DOFs
+  SolidExplicitEnergy energy_;
+};
+
+} // namespace brb::solid

@@ -1,0 +1,104 @@
+// SolidModel: a mesh of one-point hexahedra (hex8.hpp) with one 3D law per element, its
+// committed and trial material states, lumped masses and energies. The law is a template
+// parameter so the element loop calls the law directly (no virtual call per integration
+// point); the states and the reference geometry live in contiguous arrays, one entry per
+// element. Instantiated for material::IsotropicElastic3D, material::SteelDamagePlasticity3D
+// and material::MortarDamage3D.
+//
+// Degrees of freedom: the displacements of the nodes, node-major (3 n + i, i = x, y, z).
+// Trial / commit as the laws: evaluate() changes only the trial states; commit() accepts
+// them (a failed Newton iteration just evaluates again).
+//
+// Threads: evaluate() shares the elements among set_threads() threads in contiguous blocks;
+// each element writes only its own slots (force, tangent, energies), and the nodal sums are
+// then made in element order by one thread, so the results are bitwise the same for every
+// thread count.
+#pragma once
+
+#include "brb/solid/hex8.hpp"
+#include "brb/solid/hex_mesh.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace brb::solid {
+
+/// Energies of a state (N mm).
+struct SolidEnergy {
+  double internal = 0.0; ///< work of the centre-point stresses, int S : dE dV (stored + dissipated)
+  double hourglass = 0.0; ///< stored hourglass energy (conservative stiffness form)
+};
+
+template <class Law> class SolidModel {
+public:
+  using State = typename Law::State;
+  /// law_for(lc): the law of an element whose characteristic length is lc = V^(1/3) (mm): the
+  /// one-point element's integration weight is its volume V, so a softening law dissipates
+  /// Gf per unit area over a band one element wide. density: tonne / mm^3, > 0.
+  /// Throws std::invalid_argument for an inverted element or a bad density.
+  SolidModel(HexMesh mesh, const std::function<Law(double)>& law_for, double density);
+
+  const HexMesh& mesh() const { return mesh_; }
+  int node_count() const { return mesh_.node_count(); }
+  int dof_count() const { return 3 * mesh_.node_count(); }
+  int element_count() const { return mesh_.element_count(); }
+  const std::vector<Hex8Reference>& references() const { return references_; }
+  const std::vector<Law>& laws() const { return laws_; }
+
+  /// Trial state at nodal displacements u: internal forces (dof_count) and, when `tangent`
+  /// is not null, the consistent tangent d force / d u. Returns false, with `reason`, when an
+  /// element inverts (det F <= 0) or a stress is not finite.
+  bool evaluate(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
+                Eigen::SparseMatrix<double>* tangent, std::string& reason);
+  /// Accepts the last evaluate(): states, strains, stresses and the internal work.
+  void commit();
+
+  /// Threads of the element loop (>= 1; default 1). Throws std::invalid_argument below 1.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+
+  /// Second Piola-Kirchhoff stress and Green-Lagrange strain (Voigt) of each element, as of
+  /// the last evaluate().
+  const std::vector<material::Vector6>& trial_stress() const { return trial_stress_; }
+  const std::vector<material::Vector6>& trial_strain() const { return trial_strain_; }
+  const std::vector<material::Vector6>& stress() const { return committed_stress_; }
+  const std::vector<State>& states() const { return committed_states_; }
+  const std::vector<State>& trial_states() const { return trial_states_; }
+  /// Energies of the committed state, and of the last evaluate().
+  const SolidEnergy& energy() const { return committed_energy_; }
+  const SolidEnergy& trial_energy() const { return trial_energy_; }
+
+  /// Lumped (row-sum) mass per DOF: rho V / 8 from each element to each of its nodes.
+  Eigen::VectorXd lumped_mass() const;
+  double density() const { return density_; }
+  /// Stable central-difference step: safety x min over elements of 2 / w_max (hex8.hpp).
+  double stable_time_step(double safety) const;
+
+private:
+  /// The element's trial response into its own slots; false when it inverts or its stress is
+  /// not finite (recorded in element_jacobian_ / element_finite_).
+  bool evaluate_element(std::size_t e, const Eigen::Matrix3Xd& displacement, bool with_tangent);
+
+  HexMesh mesh_;
+  int threads_ = 1;
+  double density_ = 0.0;
+  std::vector<Law> laws_;
+  std::vector<Hex8Reference> references_;
+  std::vector<HourglassStiffness> hourglass_;
+  std::vector<double> dilatational_modulus_; // lambda + 2 mu of each element's law
+  std::vector<State> committed_states_, trial_states_;
+  std::vector<material::Vector6> committed_stress_, trial_stress_;
+  std::vector<material::Vector6> committed_strain_, trial_strain_;
+  SolidEnergy committed_energy_, trial_energy_;
+  // per-element results of the last evaluate()
+  std::vector<NodeMatrix> element_force_;
+  std::vector<ElementMatrix> element_tangent_;
+  std::vector<double> element_work_, element_hourglass_, element_jacobian_;
+  std::vector<char> element_failed_;
+};
+
+} // namespace brb::solid
