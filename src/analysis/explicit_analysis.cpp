@@ -1,10 +1,7 @@
 // Explicit central difference through Boost.Odeint's velocity Verlet (see
 // explicit_analysis.hpp for the method, the mass scaling rule and the stable step).
 #include "brb/analysis/explicit_analysis.hpp"
-
-#include <boost/numeric/odeint/algebra/default_operations.hpp>
-#include <boost/numeric/odeint/algebra/vector_space_algebra.hpp>
-#include <boost/numeric/odeint/stepper/velocity_verlet.hpp>
+#include "brb/analysis/eigen_velocity_verlet.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,13 +12,7 @@ namespace brb::analysis {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
-
-/// Velocity Verlet on Eigen vectors: vector_space_algebra applies its operations to whole
-/// vectors (t1 = a1 t2 + a2 t3 + a3 t4), which Eigen evaluates in one expression.
-using Stepper =
-    odeint::velocity_verlet<Eigen::VectorXd, Eigen::VectorXd, double, Eigen::VectorXd, double,
-                            double, odeint::vector_space_algebra, odeint::default_operations>;
+using Stepper = EigenVelocityVerlet;
 
 const char* dof_name(int dof) {
   static constexpr const char* names[] = {"ux", "uy", "uz", "rx", "ry", "rz"};

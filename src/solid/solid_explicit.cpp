@@ -1,13 +1,10 @@
 // Explicit central differences for the 3D continuum model (see solid_explicit.hpp).
 #include "brb/solid/solid_explicit.hpp"
+#include "brb/analysis/eigen_velocity_verlet.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
 #include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_damage_plasticity_3d.hpp"
-
-#include <boost/numeric/odeint/algebra/default_operations.hpp>
-#include <boost/numeric/odeint/algebra/vector_space_algebra.hpp>
-#include <boost/numeric/odeint/stepper/velocity_verlet.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,12 +15,7 @@ namespace brb::solid {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
-
-/// Velocity Verlet on Eigen vectors (vector_space_algebra: whole-vector expressions).
-using Stepper =
-    odeint::velocity_verlet<Eigen::VectorXd, Eigen::VectorXd, double, Eigen::VectorXd, double,
-                            double, odeint::vector_space_algebra, odeint::default_operations>;
+using Stepper = analysis::EigenVelocityVerlet;
 
 } // namespace
 
