@@ -224,7 +224,8 @@ int run_ida_command(const IdaCommand& command, std::ostream& report, std::ostrea
   description.runs_this_session = points.size() - std::min(points.size(), entries.size());
   description.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  ida::write_ida_outputs(command.output_directory, study, points, description);
+  const nlohmann::json summary =
+      ida::write_ida_outputs(command.output_directory, study, points, description);
 
   std::size_t collapses = 0;
   for (const ida::IdaPoint& point : points)
@@ -232,9 +233,7 @@ int run_ida_command(const IdaCommand& command, std::ostream& report, std::ostrea
   report << "  " << points.size() << " runs (" << collapses << " collapsed), "
          << std::setprecision(3) << description.wall_time << " s; outputs in "
          << command.output_directory.string() << "\n";
-  // the headline numbers, from the summary just written
-  const nlohmann::json summary =
-      nlohmann::json::parse(io::read_text_file(command.output_directory / "summary.json"));
+  // the headline numbers of the summary
   for (const nlohmann::json& record : summary["records"]) {
     if (!record.contains("collapse_intensity_g"))
       continue;

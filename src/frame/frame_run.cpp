@@ -36,10 +36,10 @@ public:
   virtual const std::vector<analysis::FallbackRecord>& fallbacks() const = 0;
 };
 
-class ImplicitSolver final : public DynamicSolver {
+/// The queries both solvers answer alike, forwarded to the analysis.
+template <class Analysis> class ForwardingSolver : public DynamicSolver {
 public:
-  explicit ImplicitSolver(analysis::TransientAnalysis& analysis) : analysis_(analysis) {}
-  analysis::TransientStepReport step(double dt) override { return analysis_.step(dt); }
+  explicit ForwardingSolver(Analysis& analysis) : analysis_(analysis) {}
   Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
   Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
   Eigen::Vector3d ground_acceleration() const override { return analysis_.ground_acceleration(); }
@@ -49,15 +49,21 @@ public:
     return analysis_.fallbacks();
   }
 
-private:
-  analysis::TransientAnalysis& analysis_;
+protected:
+  Analysis& analysis_;
+};
+
+class ImplicitSolver final : public ForwardingSolver<analysis::TransientAnalysis> {
+public:
+  using ForwardingSolver::ForwardingSolver;
+  analysis::TransientStepReport step(double dt) override { return analysis_.step(dt); }
 };
 
 /// The explicit solver: one call advances to the next output instant through as many
 /// stable steps as needed.
-class ExplicitSolver final : public DynamicSolver {
+class ExplicitSolver final : public ForwardingSolver<analysis::ExplicitAnalysis> {
 public:
-  explicit ExplicitSolver(analysis::ExplicitAnalysis& analysis) : analysis_(analysis) {}
+  using ForwardingSolver::ForwardingSolver;
   analysis::TransientStepReport step(double dt) override {
     const analysis::ExplicitStepReport run = analysis_.run_to(analysis_.time() + dt);
     analysis::TransientStepReport report;
@@ -66,17 +72,6 @@ public:
     report.failure = run.failure;
     return report;
   }
-  Eigen::VectorXd displacement() const override { return analysis_.displacement(); }
-  Eigen::VectorXd acceleration() const override { return analysis_.acceleration(); }
-  Eigen::Vector3d ground_acceleration() const override { return analysis_.ground_acceleration(); }
-  const Eigen::VectorXd& internal_force() const override { return analysis_.internal_force(); }
-  const analysis::TransientEnergy& energy() const override { return analysis_.energy(); }
-  const std::vector<analysis::FallbackRecord>& fallbacks() const override {
-    return analysis_.fallbacks();
-  }
-
-private:
-  analysis::ExplicitAnalysis& analysis_;
 };
 
 /// Follows what the recorders and the summary need, step by step.

@@ -93,9 +93,7 @@ bool Session::broadcast_go(bool go) const {
 std::vector<IdaPoint> run_master(const Session& session, const IdaStudy& study, Journal& journal,
                                  const std::vector<std::map<double, IdaPoint>>& known,
                                  IdaProgress& progress) {
-  for (const auto& record_points : known)
-    for (const auto& [intensity, point] : record_points)
-      progress.journal_point(point);
+  progress.journal_points(known);
   std::vector<std::map<double, IdaPoint>> record_points = known;
   std::vector<IdaPoint> points;
   std::size_t next_record = 0;

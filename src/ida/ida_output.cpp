@@ -67,17 +67,14 @@ std::string curves_csv(const IdaStudy& study, const std::vector<std::vector<Curv
   csv << "record,intensity_g,max_drift,state\n";
   for (std::size_t r = 0; r < curves.size(); ++r) {
     const std::string& name = study.suite().records[r].name;
-    std::vector<CurvePoint> sorted = curves[r];
-    std::sort(sorted.begin(), sorted.end(),
-              [](const CurvePoint& a, const CurvePoint& b) { return a.intensity < b.intensity; });
     csv << name << ",0,0,origin\n";
-    for (const CurvePoint& point : sorted) {
-      if (point.collapsed) {
-        // the flatline: from the lowest collapse on, the curve is at infinite demand
-        csv << name << ',' << number(point.intensity) << ",inf,collapse\n";
-        break;
-      }
+    for (const CurvePoint& point : curve_below_flatline(curves[r]))
       csv << name << ',' << number(point.intensity) << ',' << number(point.demand) << ",run\n";
+    // the flatline: from the lowest collapse on, the curve is at infinite demand
+    if (!curves[r].empty()) {
+      const CollapseCapacity capacity = collapse_capacity(curves[r]);
+      if (!capacity.censored)
+        csv << name << ',' << number(capacity.intensity) << ",inf,collapse\n";
     }
   }
   return csv.str();
@@ -102,8 +99,9 @@ std::vector<double> fractile_drift_levels(double drift_limit) {
   return levels;
 }
 
-void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& study,
-                       const std::vector<IdaPoint>& points, const IdaRunDescription& description) {
+nlohmann::json write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& study,
+                                 const std::vector<IdaPoint>& points,
+                                 const IdaRunDescription& description) {
   const std::vector<std::vector<CurvePoint>> curves = curves_of(study, points);
   const std::vector<double> levels = fractile_drift_levels(study.drift_limit());
   const std::vector<FractileRow> fractiles = fractiles_given_demand(curves, levels);
@@ -128,10 +126,8 @@ void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& s
       record["censored"] = capacity.censored;
       // the collapse bracket: the highest survival below the lowest collapse, and whether
       // the bisection narrowed it to the resolution before the run budget ran out
-      double survival = 0.0;
-      for (const CurvePoint& point : curves[r])
-        if (!point.collapsed && (capacity.censored || point.intensity < capacity.intensity))
-          survival = std::max(survival, point.intensity);
+      const std::vector<CurvePoint> below = curve_below_flatline(curves[r]);
+      const double survival = below.empty() ? 0.0 : below.back().intensity;
       record["highest_survival_g"] = survival;
       record["bracket_resolved"] =
           !capacity.censored &&
@@ -202,6 +198,7 @@ void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& s
   if (!fragility_json.is_null())
     write_text(directory / "collapse_fragility.csv", fragility_csv.str());
   write_text(directory / "summary.json", summary.dump(2) + "\n");
+  return summary;
 }
 
 } // namespace brb::ida

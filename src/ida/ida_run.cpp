@@ -29,12 +29,16 @@ std::string duration_text(double seconds) {
 IdaProgress::IdaProgress(std::ostream* out, std::size_t records, int max_runs)
     : out_(out), records_left_(records), max_runs_(max_runs) {}
 
-void IdaProgress::journal_point(const IdaPoint& point) {
+void IdaProgress::journal_points(const std::vector<std::map<double, IdaPoint>>& known) {
   const std::lock_guard lock(mutex_);
-  ++done_;
-  ++from_journal_;
-  ++runs_of_open_records_;
-  collapses_ += point.collapsed() ? 1 : 0;
+  for (const auto& record_points : known) {
+    for (const auto& [intensity, point] : record_points) {
+      ++done_;
+      ++from_journal_;
+      ++runs_of_open_records_;
+      collapses_ += point.collapsed() ? 1 : 0;
+    }
+  }
 }
 
 void IdaProgress::run_finished(const IdaPoint& point) {
@@ -98,9 +102,7 @@ std::vector<IdaPoint> run_ida_threads(const IdaStudy& study, Journal& journal,
   if (jobs < 1)
     throw std::invalid_argument("the number of jobs must be >= 1");
   const std::size_t records = study.record_count();
-  for (const auto& record_points : known)
-    for (const auto& [intensity, point] : record_points)
-      progress.journal_point(point);
+  progress.journal_points(known);
   std::vector<std::vector<IdaPoint>> traced(records);
   std::atomic<std::size_t> next_record{0};
   std::atomic<bool> stop{false};

@@ -41,10 +41,10 @@ std::optional<double> lowest_collapse_of(std::span<const CurvePoint> curve) {
   return lowest;
 }
 
-/// The IDA curve below its flatline: the non-collapsing points under the lowest collapse,
-/// by intensity (ties keep their order of the runs).
-std::vector<CurvePoint> curve_below_flatline(std::span<const CurvePoint> curve,
-                                             std::optional<double> collapse) {
+/// The non-collapsing points under `collapse` (all when there is none), by intensity (ties
+/// keep their order of the runs).
+std::vector<CurvePoint> below_collapse(std::span<const CurvePoint> curve,
+                                       std::optional<double> collapse) {
   std::vector<CurvePoint> points;
   for (const CurvePoint& point : curve) {
     if (!point.collapsed && (!collapse || point.intensity < *collapse))
@@ -218,6 +218,10 @@ void set_standard_errors(const LogCapacities& data, const NormalEstimate& estima
 
 } // namespace
 
+std::vector<CurvePoint> curve_below_flatline(std::span<const CurvePoint> curve) {
+  return below_collapse(curve, lowest_collapse_of(curve));
+}
+
 double intensity_at_demand(std::span<const CurvePoint> curve, double demand) {
   check_curve(curve, "intensity_at_demand");
   if (!(std::isfinite(demand) && demand >= 0.0)) {
@@ -226,7 +230,7 @@ double intensity_at_demand(std::span<const CurvePoint> curve, double demand) {
                                 std::to_string(demand));
   }
   const std::optional<double> collapse = lowest_collapse_of(curve);
-  const std::vector<CurvePoint> points = curve_below_flatline(curve, collapse);
+  const std::vector<CurvePoint> points = below_collapse(curve, collapse);
   // Segments from (0, 0) through the points; the first whose end reaches the demand.
   double previous_intensity = 0.0;
   double previous_demand = 0.0;

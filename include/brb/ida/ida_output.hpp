@@ -11,6 +11,8 @@
 #include "brb/ida/ida_point.hpp"
 #include "brb/ida/ida_study.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <vector>
 
@@ -28,7 +30,9 @@ struct IdaRunDescription {
 /// The drift levels of the fractile table: 40 levels from limit/40 to the drift limit.
 std::vector<double> fractile_drift_levels(double drift_limit);
 
-void write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& study,
-                       const std::vector<IdaPoint>& points, const IdaRunDescription& description);
+/// Writes the files; returns the content of summary.json.
+nlohmann::json write_ida_outputs(const std::filesystem::path& directory, const IdaStudy& study,
+                                 const std::vector<IdaPoint>& points,
+                                 const IdaRunDescription& description);
 
 } // namespace brb::ida

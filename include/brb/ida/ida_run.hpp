@@ -22,7 +22,8 @@ namespace brb::ida {
 class IdaProgress {
 public:
   IdaProgress(std::ostream* out, std::size_t records, int max_runs);
-  void journal_point(const IdaPoint& point);
+  /// Counts the runs a resumed study takes from its journal (grouped by record).
+  void journal_points(const std::vector<std::map<double, IdaPoint>>& known);
   void run_finished(const IdaPoint& point);
   void record_finished(std::size_t runs);
   std::size_t runs_done() const { return done_; }

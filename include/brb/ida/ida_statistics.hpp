@@ -20,6 +20,11 @@ struct CurvePoint {
   bool collapsed = false;
 };
 
+/// A record's IDA curve below its flatline: its non-collapsing runs under the lowest
+/// collapse (all of them when none collapsed), sorted by intensity (ties keep the order of
+/// the runs). Survivals above the lowest collapse ("resurrection") are left out.
+std::vector<CurvePoint> curve_below_flatline(std::span<const CurvePoint> curve);
+
 /// The intensity at which a record's IDA curve first reaches `demand`: the curve is its
 /// non-collapsing points below the lowest collapse (survivals above it, "resurrection", are
 /// ignored) sorted by intensity, joined by straight lines from (0, 0); the first crossing of
