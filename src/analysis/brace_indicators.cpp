@@ -8,6 +8,12 @@ namespace {
 
 constexpr double kCrushedDamage = 0.9;       // a bearing face this damaged has crushed through
 constexpr double kGlobalBucklingRatio = 250; // lateral deflection beyond L_y / 250
+// ... while the brace, being shortened, either carries less than this fraction of its
+// largest compression so far (the bow costs it strength) ...
+constexpr double kGlobalBucklingForceRatio = 0.9;
+// ... or, below the yield force, stiffens by less than this fraction of its elastic axial
+// stiffness P_y / d_y (an elastic buckle: the force plateaus under the Euler load)
+constexpr double kGlobalBucklingStiffnessRatio = 0.5;
 
 } // namespace
 
@@ -54,6 +60,21 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
         std::max(indicators.max_core_lateral_displacement,
                  lateral_of(brace.nodes[n], initial_positions_[n]).norm());
   }
+  // Global buckling is the brace bowing as a whole: lateral offsets from the current chord
+  // of its outer nodes (so a brace that rotates or translates rigidly, as in a frame, does
+  // not count), at the place each node had along the initial chord.
+  const element::Vector3& start_initial = initial_positions_.front();
+  const element::Vector3 initial_chord = initial_positions_.back() - start_initial;
+  const element::Vector3& start_now = position(brace.start_node);
+  const element::Vector3 chord_now = position(brace.end_node) - start_now;
+  const auto bow_of = [&](int node) {
+    const element::Vector3 initial = model_->coordinates(node);
+    const double along = (initial - start_initial).dot(initial_chord) / initial_chord.squaredNorm();
+    const element::Vector3 offset = position(node) - (start_now + along * chord_now) -
+                                    (initial - (start_initial + along * initial_chord));
+    return Eigen::Vector2d(offset.dot(brace.axes.col(1)), offset.dot(brace.axes.col(2)));
+  };
+  double global_bow = 0.0;
   // Lateral displacement of the yielding core's stations, relative to the casing if any.
   std::vector<Eigen::Vector2d> relative;
   double casing_lateral = 0.0;
@@ -68,11 +89,16 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
         indicators.max_mortar_damage = std::max(indicators.max_mortar_damage, section.max_damage());
       }
     }
+    const auto& link = casing.interior_link;
     for (std::size_t s = 0; s < casing.nodes.size(); ++s) {
       const int casing_node = casing.nodes[s];
       const Eigen::Vector2d casing_motion =
           lateral_of(casing_node, model_->coordinates(casing_node));
       casing_lateral = std::max(casing_lateral, casing_motion.norm());
+      // the casing may shift sideways by the clearance without the brace bowing
+      const Eigen::Vector2d bow = bow_of(casing_node);
+      global_bow = std::max(global_bow, std::hypot(std::max(0.0, std::abs(bow[0]) - link.gap_y),
+                                                   std::max(0.0, std::abs(bow[1]) - link.gap_z)));
       const int core_node = casing.core_nodes[s];
       relative.push_back(lateral_of(core_node, model_->coordinates(core_node)) - casing_motion);
     }
@@ -81,6 +107,8 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     if (indicators.max_mortar_damage >= kCrushedDamage)
       indicators.casing_failure = true;
   } else {
+    for (const int node : brace.nodes)
+      global_bow = std::max(global_bow, bow_of(node).norm());
     for (std::size_t e = 0; e < brace.beams.size(); ++e) {
       if (!brace.in_yielding_zone[e])
         continue;
@@ -116,10 +144,18 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
   }
   if (indicators.max_steel_damage >= kFractureDamage)
     indicators.core_fracture = true;
-  const double global_lateral =
-      brace.casing ? casing_lateral : indicators.max_core_lateral_displacement;
-  if (yielding_length_ > 0.0 && global_lateral > yielding_length_ / kGlobalBucklingRatio)
-    indicators.global_buckling = true;
+  const double shortening = previous_deformation_ - deformation; // > 0: shorter
+  peak_compression_ = std::max(peak_compression_, -force);
+  if (yielding_length_ > 0.0 && global_bow > yielding_length_ / kGlobalBucklingRatio &&
+      shortening > 0.0 && force < 0.0) {
+    const double elastic_stiffness = brace.yield_force / brace.yield_deformation;
+    const double step_stiffness = (previous_force_ - force) / shortening;
+    const bool weakened = -force < kGlobalBucklingForceRatio * peak_compression_;
+    const bool plateau = -force < brace.yield_force &&
+                         step_stiffness < kGlobalBucklingStiffnessRatio * elastic_stiffness;
+    if (weakened || plateau)
+      indicators.global_buckling = true;
+  }
 
   indicators.cumulative_inelastic_deformation +=
       inelastic_deformation_increment(deformation - previous_deformation_, force - previous_force_,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -187,11 +188,12 @@ std::string millimetres(double value) {
   return text.str();
 }
 
-model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) {
+model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
+                              const std::optional<model::ZoneSpec>& transition) {
   object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
-                        "layer_stiffness", "fill_fibers", "stopper"},
+                        "layer_stiffness", "fill_fibers", "stopper", "overlap"},
                        "a casing object {tube or outline, tube_steel, mortar, gap, friction, "
-                       "layer_stiffness, fill_fibers, stopper} or null");
+                       "layer_stiffness, fill_fibers, stopper, overlap} or null");
   model::CasingSpec casing;
   const auto outline = object.find("outline");
   if (outline && object.find("tube")) {
@@ -266,6 +268,19 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) 
     casing.fill_fibers_a = positive_count(fibers->element(0), "fiber count");
     casing.fill_fibers_b = positive_count(fibers->element(1), "fiber count");
   }
+  if (const auto overlap = object.find("overlap")) {
+    casing.overlap = overlap->number("length of each transition zone inside the casing, mm");
+    if (!transition && casing.overlap != 0.0) {
+      throw overlap->error("a casing overlap needs a \"transition\" zone to overlap (the brace "
+                           "has none)");
+    }
+    const double transition_length = transition ? transition->length : 0.0;
+    if (!(casing.overlap >= 0.0 && casing.overlap <= transition_length)) {
+      throw overlap->error("the casing overlap must be >= 0 and at most the transition length " +
+                           millimetres(transition_length) + " (got " +
+                           describe_json_value(overlap->json()) + ")");
+    }
+  }
   if (const auto stopper = object.find("stopper")) {
     stopper->expect_object({"position"}, "a stopper object {\"position\": fraction}");
     if (const auto position = stopper->find("position")) {
@@ -291,6 +306,22 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core) 
           std::string("casing too thin for the core: along ") + axis + " the tube's inside, " +
           millimetres(inside) + ", must exceed the core's extent + 2 gaps, " + millimetres(needed) +
           ", to leave room for mortar (short by " + millimetres(needed - inside) + ")");
+    }
+  }
+  if (casing.overlap > 0.0) {
+    // the transition's part inside the casing keeps the same clearances around its section
+    const auto [transition_y, transition_z] = model::core_extent(transition->section);
+    for (const auto& [axis, inside, extent, gap_size] :
+         {std::tuple{"y", inside_y, transition_y, casing.gap_y},
+          std::tuple{"z", inside_z, transition_z, casing.gap_z}}) {
+      const double needed = extent + 2.0 * gap_size;
+      if (!(inside > needed)) {
+        throw object.at("overlap", "")
+            .error(std::string("the transition section does not fit inside the casing: along ") +
+                   axis + " the tube's inside, " + millimetres(inside) +
+                   ", must exceed the transition's extent + 2 gaps, " + millimetres(needed) +
+                   " (a casing overlap puts the transition inside the casing)");
+      }
     }
   }
   // mortar_thickness throws when there is no room; the check above keeps that from happening,
@@ -433,7 +464,7 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
   }
 
   if (const auto casing = root.find("casing"); casing && !casing->json().is_null()) {
-    spec.casing = read_casing(*casing, spec.core_section);
+    spec.casing = read_casing(*casing, spec.core_section, spec.transition);
   }
   if (const auto element = root.find("element")) {
     spec.element = read_element(*element);

@@ -19,27 +19,40 @@ struct Zone {
   const SectionSpec* section;
   int elements;
   bool yielding;
+  bool inside_casing; ///< the yielding zone and the transition overlap (CasingSpec::overlap)
 };
 
-/// Zones from start to end.
+/// Zones from start to end. A casing overlap splits each transition zone in two: the part
+/// inside the casing (next to the yielding core, with elements about as long as the core's)
+/// and the rest (the transition's own element count). The split does not depend on whether
+/// the casing is built, so the bare core of a spec has the same nodes as the spec.
 std::vector<Zone> zones_of(const BraceSpec& spec) {
+  const double overlap = spec.casing && spec.transition ? spec.casing->overlap : 0.0;
+  std::vector<Zone> transition_outward; // from the yielding core outward
+  if (spec.transition) {
+    const ZoneSpec& transition = *spec.transition;
+    if (overlap > 0.0) {
+      const double core_element_length = spec.yielding_length / spec.core_elements;
+      const int overlap_elements =
+          std::max(1, static_cast<int>(std::lround(overlap / core_element_length)));
+      transition_outward.push_back({overlap, &transition.section, overlap_elements, false, true});
+    }
+    if (transition.length - overlap > 0.0) {
+      transition_outward.push_back(
+          {transition.length - overlap, &transition.section, transition.elements, false, false});
+    }
+  }
   std::vector<Zone> zones;
   if (spec.connection) {
-    zones.push_back(
-        {spec.connection->length, &spec.connection->section, spec.connection->elements, false});
+    zones.push_back({spec.connection->length, &spec.connection->section, spec.connection->elements,
+                     false, false});
   }
-  if (spec.transition) {
-    zones.push_back(
-        {spec.transition->length, &spec.transition->section, spec.transition->elements, false});
-  }
-  zones.push_back({spec.yielding_length, &spec.core_section, spec.core_elements, true});
-  if (spec.transition) {
-    zones.push_back(
-        {spec.transition->length, &spec.transition->section, spec.transition->elements, false});
-  }
+  zones.insert(zones.end(), transition_outward.rbegin(), transition_outward.rend());
+  zones.push_back({spec.yielding_length, &spec.core_section, spec.core_elements, true, true});
+  zones.insert(zones.end(), transition_outward.begin(), transition_outward.end());
   if (spec.connection) {
-    zones.push_back(
-        {spec.connection->length, &spec.connection->section, spec.connection->elements, false});
+    zones.push_back({spec.connection->length, &spec.connection->section, spec.connection->elements,
+                     false, false});
   }
   return zones;
 }
@@ -49,10 +62,14 @@ void check(bool condition, const std::string& field, const std::string& expected
     throw ParameterError(field, expected);
 }
 
-/// Adds the casing around the yielding zone (see brace_model.hpp). Stations: the core nodes
-/// of the yielding zone; each gets a casing node on the straight brace axis.
+/// Adds the casing around the yielding zone and the transition overlaps (see
+/// brace_model.hpp). Stations: the core nodes of the elements inside the casing (per element:
+/// `inside_casing`, and its section in `element_sections`); each gets a casing node on the
+/// straight brace axis.
 CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
-                       const element::BeamIntegration& integration) {
+                       const element::BeamIntegration& integration,
+                       const std::vector<bool>& inside_casing,
+                       const std::vector<const SectionSpec*>& element_sections) {
   const CasingSpec& casing = *spec.casing;
   check(casing.tube.shape == SectionShape::rectangular_tube ||
             casing.tube.shape == SectionShape::circular_tube,
@@ -66,17 +83,30 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   if (casing.steel_tube)
     casing.tube_steel.validate();
   casing.mortar.validate();
+  const double transition_length = spec.transition ? spec.transition->length : 0.0;
+  check(casing.overlap >= 0.0 && casing.overlap <= transition_length, "casing/overlap",
+        "must be in [0, transition length] (" + std::to_string(transition_length) + " mm)");
   const element::Matrix3& axes = brace.axes;
   const element::Vector3 axis = axes.col(0);
 
-  // stations: core nodes of the yielding zone, from start to end
+  // stations: core nodes of the elements inside the casing, from start to end; the section
+  // the mortar bears on at each (a station between a transition and a core element: the core)
   CasingModel result;
+  std::vector<const SectionSpec*> station_sections;
+  std::vector<const SectionSpec*> segment_sections; // casing element n: stations n, n + 1
   for (std::size_t e = 0; e < brace.beams.size(); ++e) {
-    if (!brace.in_yielding_zone[e])
+    if (!inside_casing[e])
       continue;
-    if (result.core_nodes.empty())
+    if (result.core_nodes.empty()) {
       result.core_nodes.push_back(brace.nodes[e]);
+      station_sections.push_back(element_sections[e]);
+    } else if (brace.in_yielding_zone[e]) {
+      station_sections.back() = &spec.core_section;
+    }
     result.core_nodes.push_back(brace.nodes[e + 1]);
+    station_sections.push_back(brace.in_yielding_zone[e] ? &spec.core_section
+                                                         : element_sections[e]);
+    segment_sections.push_back(element_sections[e]);
   }
   const std::size_t stations = result.core_nodes.size();
   std::vector<double> station_x;
@@ -89,7 +119,6 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   // (a mortar-only casing has no steel fibers: an empty layout)
   const section::FiberLayout tube_layout =
       casing.steel_tube ? casing.tube.mesh() : section::FiberLayout{};
-  const section::FiberLayout fill_layout = casing.fill_mesh(spec.core_section);
   // Without a tube the steel part of the section has no fibers; the core's steel stands in
   // for its (unused) law so that the section type stays the same.
   const material::SteelParameters& tube_steel = casing.steel_tube ? casing.tube_steel : spec.steel;
@@ -99,6 +128,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   for (std::size_t n = 0; n + 1 < stations; ++n) {
     const int first = result.nodes[n], second = result.nodes[n + 1];
     const double length = station_x[n + 1] - station_x[n];
+    // the fill around the core, or around the transition in the overlaps
+    const section::FiberLayout fill_layout = casing.fill_mesh(*segment_sections[n]);
     std::vector<CasingSection> sections;
     sections.reserve(integration.weights.size());
     for (const double weight : integration.weights) {
@@ -116,13 +147,15 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   // contact links. A y face (normal to y) bears over the tributary length times the core's
   // extent along z; the penetration turns into strain over the mortar's thickness in that
   // direction (a plate core in a square tube has a thin and a thick side).
-  const auto [extent_y, extent_z] = core_extent(spec.core_section);
-  const auto [thickness_y, thickness_z] = casing.mortar_thickness(spec.core_section);
+  const auto [core_extent_y, core_extent_z] = core_extent(spec.core_section);
+  const auto [core_thickness_y, core_thickness_z] = casing.mortar_thickness(spec.core_section);
   const double layer_per_length = casing.layer_stiffness.value_or(
       CasingSpec::kDefaultLayerRatio * casing.mortar.youngs_modulus *
-      std::min(extent_y / thickness_y, extent_z / thickness_z));
+      std::min(core_extent_y / core_thickness_y, core_extent_z / core_thickness_z));
   check(layer_per_length >= 0.0, "casing/layer_stiffness", "must be >= 0 N/mm per mm");
   for (std::size_t n = 0; n < stations; ++n) {
+    const auto [extent_y, extent_z] = core_extent(*station_sections[n]);
+    const auto [thickness_y, thickness_z] = casing.mortar_thickness(*station_sections[n]);
     const double before = n > 0 ? station_x[n] - station_x[n - 1] : 0.0;
     const double after = n + 1 < stations ? station_x[n + 1] - station_x[n] : 0.0;
     const double tributary = 0.5 * (before + after);
@@ -151,7 +184,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
         std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link)));
     if (n == stations / 2)
-      result.interior_link = link;
+      result.interior_link = link; // mid-length: a core station
   }
 
   // stopper at the station nearest its position along the casing (default: mid-length)
@@ -184,7 +217,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
 /// nodes at the ends of the brace's axis), else new nodes.
 BraceHandles place(Model& model, const BraceSpec& spec,
                    const std::vector<std::pair<double, double>>& offsets,
-                   const BracePlacement& placement, std::optional<std::array<int, 2>> ends) {
+                   const BracePlacement& placement, std::optional<std::array<int, 2>> ends,
+                   bool with_casing = true) {
   check(spec.yielding_length > 0.0, "core/yielding_length", "must be > 0 mm");
   check(spec.core_elements >= 1, "core/elements", "must be >= 1");
   for (const auto* zone : {&spec.transition, &spec.connection}) {
@@ -219,6 +253,8 @@ BraceHandles place(Model& model, const BraceSpec& spec,
     brace.nodes.push_back(existing ? *existing
                                    : model.add_node(placement.origin + placement.axes * point));
   };
+  std::vector<bool> inside_casing;                  // per element
+  std::vector<const SectionSpec*> element_sections; // per element
   const std::size_t zone_count = zones_of(spec).size();
   std::size_t zone_index = 0;
   add_node(0.0, ends ? std::optional<int>(ends->front()) : std::nullopt);
@@ -256,21 +292,25 @@ BraceHandles place(Model& model, const BraceSpec& spec,
           std::array<int, 2>{first, second}, model.coordinates(first), model.coordinates(second),
           placement.axes.col(2), integration, std::move(sections))));
       brace.in_yielding_zone.push_back(zone.yielding);
+      inside_casing.push_back(zone.inside_casing);
+      element_sections.push_back(zone.section);
     }
   }
   brace.yield_deformation = brace.yield_force * flexibility;
   brace.start_node = brace.nodes.front();
   brace.end_node = brace.nodes.back();
-  if (spec.casing)
-    brace.casing = add_casing(model, brace, spec, integration);
+  if (spec.casing && with_casing)
+    brace.casing = add_casing(model, brace, spec, integration, inside_casing, element_sections);
   return brace;
 }
 
 /// The stand-alone brace model along global x: the test set-up of `brb cyclic` (start node
 /// held, end node driven along x; pinned or fixed ends).
-BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, double>>& offsets) {
+BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, double>>& offsets,
+                 bool with_casing = true) {
   BraceModel brace;
-  static_cast<BraceHandles&>(brace) = place(brace.model, spec, offsets, BracePlacement{}, {});
+  static_cast<BraceHandles&>(brace) =
+      place(brace.model, spec, offsets, BracePlacement{}, {}, with_casing);
   Model& model = brace.model;
   for (const Dof dof : {ux, uy, uz, rx})
     model.fix(brace.start_node, dof);
@@ -285,13 +325,6 @@ BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, doub
   return brace;
 }
 
-/// The spec without its casing (for the positions and buckling mode of the core).
-BraceSpec bare_core_of(const BraceSpec& spec) {
-  BraceSpec bare = spec;
-  bare.casing.reset();
-  return bare;
-}
-
 /// Lateral offsets (section y, z) of the core nodes from the imperfection.
 std::vector<std::pair<double, double>> imperfection_offsets(const BraceSpec& spec) {
   const double total = spec.total_length();
@@ -299,7 +332,7 @@ std::vector<std::pair<double, double>> imperfection_offsets(const BraceSpec& spe
         "imperfection/amplitude",
         "must be >= 0 and shorter than the brace (" + std::to_string(total) + " mm)");
   // node x positions of a straight model, for the offsets
-  BraceModel straight = build(bare_core_of(spec), {});
+  BraceModel straight = build(spec, {}, /*with_casing=*/false);
   std::vector<std::pair<double, double>> offsets(straight.nodes.size(), {0.0, 0.0});
   const double amplitude = spec.imperfection.amplitude;
   if (amplitude > 0.0) {
@@ -409,7 +442,7 @@ std::vector<std::pair<double, double>> first_buckling_mode(const BraceSpec& spec
   // Linearised buckling of the perfect brace: K0 phi = lambda (K0 - K1) phi, with K1 the
   // tangent under a small elastic shortening; the geometric stiffness is linear in the
   // axial force for such a small step. The first mode has the largest 1/lambda.
-  BraceModel brace = build(bare_core_of(spec), {});
+  BraceModel brace = build(spec, {}, /*with_casing=*/false);
   analysis::StaticAnalysis analysis(brace.model);
   analysis.use_displacement_control(brace.end_node, ux);
   const Eigen::MatrixXd initial = Eigen::MatrixXd(analysis.free_tangent());

@@ -268,6 +268,90 @@ TEST(BraceInput, StopperGoesToTheStationNearestItsPosition) {
   }
 }
 
+/// A 40 x 10 mm plate core (8 elements of 37.5 mm) with 60 mm transitions (2 elements) of a
+/// 50 x 10 mm plate and a mortar-filled 80 x 60 x 4 tube, gaps 1 mm.
+json plate_brace_with_transition() {
+  json brace = minimal_brace();
+  brace["core"]["elements"] = 8;
+  brace["transition"] = {{"length", 60.0},
+                         {"section", {{"shape", "rectangle"}, {"width", 50.0}, {"depth", 10.0}}},
+                         {"elements", 2}};
+  brace["casing"] = girona_casing();
+  brace["casing"]["tube"] = {
+      {"shape", "rectangular_tube"}, {"width", 80.0}, {"depth", 60.0}, {"wall", 4.0}};
+  brace["casing"]["gap"] = 1.0;
+  return brace;
+}
+
+TEST(BraceInput, CasingOverlapPutsTheTransitionInsideTheCasing) {
+  json brace = plate_brace_with_transition();
+  const model::BraceModel without = model::build_brace_model(parse_brace(brace.dump(), "o.json"));
+  ASSERT_TRUE(without.casing.has_value());
+  EXPECT_EQ(without.casing->nodes.size(), 9u); // the yielding zone's stations only
+
+  brace["casing"]["overlap"] = 40.0; // about one core element (37.5 mm) per end
+  const model::BraceSpec spec = parse_brace(brace.dump(), "o.json");
+  ASSERT_TRUE(spec.casing.has_value());
+  EXPECT_EQ(spec.casing->overlap, 40.0);
+  const model::BraceModel with = model::build_brace_model(spec);
+  ASSERT_TRUE(with.casing.has_value());
+  const model::CasingModel& casing = *with.casing;
+  // 9 core stations + 1 overlap station per end (round(40 / 37.5) = 1 element each); the
+  // transition's rest keeps its 2 elements: 2 x (1 + 2) + 8 elements in all
+  ASSERT_EQ(casing.nodes.size(), 11u);
+  EXPECT_EQ(with.beams.size(), 14u);
+  EXPECT_NEAR(with.model.coordinates(with.end_node).x(), 300.0 + 2.0 * 60.0, 1e-9);
+  // the casing now starts 40 mm before the yielding zone and ends 40 mm after it
+  const double first = with.model.coordinates(casing.nodes.front()).x();
+  const double last = with.model.coordinates(casing.nodes.back()).x();
+  EXPECT_NEAR(last - first, 300.0 + 2.0 * 40.0, 1e-9);
+  EXPECT_NEAR(with.model.coordinates(casing.core_nodes.front()).x(), first, 1e-9);
+  // an overlap station bears on the 50 mm wide transition over half its 40 mm element: the
+  // y face over 20 x 10 mm^2 with (72 - 50) / 2 - 1 = 10 mm of mortar; a core station at
+  // mid-length over 37.5 x 10 mm^2 with (72 - 40) / 2 - 1 = 15 mm
+  // (the faces' areas: bearing_area_y = tributary x extent_z, bearing_area_z = x extent_y)
+  // (checked through the link parameters of the mid station and the tributary lengths)
+  EXPECT_NEAR(casing.tributary_length.front(), 20.0, 1e-9);
+  EXPECT_NEAR(casing.tributary_length[1], 0.5 * (40.0 + 37.5), 1e-9);
+  EXPECT_NEAR(casing.interior_link.bearing_depth_y, 15.0, 1e-12);
+  EXPECT_NEAR(casing.interior_link.bearing_area_z, 37.5 * 40.0, 1e-9);
+  // the end casing element's fill is cast around the transition: 72 x 52 - 52 x 12 mm^2
+  const auto& end_section = casing.beams.front()->local_beam().sections().front();
+  EXPECT_NEAR(end_section.second().layout().total_area(), 72.0 * 52.0 - 52.0 * 12.0, 1e-9);
+  const auto& core_section = casing.beams[1]->local_beam().sections().front();
+  EXPECT_NEAR(core_section.second().layout().total_area(), 72.0 * 52.0 - 42.0 * 12.0, 1e-9);
+}
+
+TEST(BraceInput, CasingOverlapIsCheckedAgainstTheTransition) {
+  const auto expect_rejected = [](const json& brace, const std::string& location,
+                                  const std::string& words) {
+    try {
+      parse_brace(brace.dump(), "overlap.json");
+      ADD_FAILURE() << "no InputError for " << location << " (" << words << ")";
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.location(), location) << error.what();
+      EXPECT_NE(std::string(error.what()).find(words), std::string::npos) << error.what();
+    }
+  };
+  json longer = plate_brace_with_transition();
+  longer["casing"]["overlap"] = 61.0;
+  expect_rejected(longer, "/casing/overlap", "at most the transition length 60 mm");
+  json negative = plate_brace_with_transition();
+  negative["casing"]["overlap"] = -1.0;
+  expect_rejected(negative, "/casing/overlap", "must be >= 0");
+  json no_transition = plate_brace_with_transition();
+  no_transition.erase("transition");
+  no_transition["casing"]["overlap"] = 10.0;
+  expect_rejected(no_transition, "/casing/overlap", "needs a \"transition\"");
+  json wide = plate_brace_with_transition();
+  wide["transition"]["section"]["width"] = 71.0; // 71 + 2 x 1 > 72 mm inside
+  wide["casing"]["overlap"] = 30.0;
+  expect_rejected(wide, "/casing/overlap", "does not fit inside the casing: along y");
+  json full = plate_brace_with_transition(); // the whole transition inside: accepted
+  full["casing"]["overlap"] = 60.0;
+  EXPECT_EQ(parse_brace(full.dump(), "overlap.json").casing->overlap, 60.0);
+}
+
 TEST(BraceInput, CasingTooThinSaysByHowMuch) {
   json brace = cased_brace();
   brace["casing"]["tube"]["diameter"] = 24.0; // inside 18 mm < 22 + 2 x 0.5

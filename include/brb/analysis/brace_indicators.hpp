@@ -13,8 +13,14 @@ namespace brb::analysis {
 /// Flags follow stated rules (constants in brace_indicators.cpp):
 ///  - core fracture: some core fiber's damage reached 0.9;
 ///  - casing failure: the mortar under some station crushed through (bearing damage >= 0.9);
-///  - global buckling: the casing (or, without casing, the core) deflected laterally by more
-///    than L_y / 250.
+///  - global buckling: the casing (or, without casing, the core) bowed laterally by more than
+///    L_y / 250 (its offset from the current chord of the brace's outer nodes, less the
+///    clearance (gap) per direction for a casing, which may shift sideways by that much
+///    without the brace bowing) while the brace, being shortened, either carried less than
+///    90 % of its largest compression so far, or stayed below P_y and stiffened by less
+///    than half its elastic stiffness P_y / d_y over the step (an elastic buckle). A bow
+///    alone is not instability: a casing on gaps at pinned ends can swing sideways at small
+///    load and then hold.
 struct BraceIndicators {
   double max_steel_damage = 0.0;  ///< largest damage of a core fiber
   double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
@@ -75,6 +81,7 @@ private:
   double yielding_length_ = 0.0;
   double previous_deformation_ = 0.0;
   double previous_force_ = 0.0;
+  double peak_compression_ = 0.0; ///< largest compressive force so far (N, >= 0)
   BraceIndicators indicators_;
 };
 

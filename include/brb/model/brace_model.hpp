@@ -37,10 +37,10 @@ using CasingBeam = element::CorotBeam3D<CasingSection>;
 
 /// The casing's part of a brace model (element pointers are owned by the Model).
 struct CasingModel {
-  std::vector<int> nodes;               ///< casing nodes from start to end of the yielding zone
-  std::vector<int> core_nodes;          ///< the core node at each casing station
-  std::vector<double> tributary_length; ///< per station (mm)
-  std::vector<CasingBeam*> beams;       ///< casing elements from start to end
+  std::vector<int> nodes;                         ///< casing nodes from start to end (its stations)
+  std::vector<int> core_nodes;                    ///< the core node at each casing station
+  std::vector<double> tributary_length;           ///< per station (mm)
+  std::vector<CasingBeam*> beams;                 ///< casing elements from start to end
   std::vector<element::CasingContact*> contacts;  ///< one per station
   element::ZeroLengthSpring* stopper = nullptr;   ///< core-casing tie (stopper)
   std::size_t stopper_station = 0;                ///< index into nodes

@@ -91,6 +91,13 @@ struct CasingSpec {
   /// Where the stopper ties core and casing: a fraction of the casing's length from its
   /// start, in [0, 1]; it goes to the station nearest that point (0.5: mid-length).
   double stopper_position = 0.5;
+  /// Length of each transition zone that lies inside the casing, from the yielding core
+  /// outward (mm, 0 <= overlap <= transition length; default 0: the casing spans the
+  /// yielding length only). Real BRBs insert the stiffer transition into the casing so that
+  /// the core cannot hinge where it leaves the casing (the end-zone mechanism of a pinned
+  /// brace with long end zones). The overlap gets its own elements and contact stations,
+  /// with the same clearances around the transition's section.
+  double overlap = 0.0;
 
   /// The mortar fill's fiber layout around a core of the given section.
   section::FiberLayout fill_mesh(const SectionSpec& core) const;

@@ -1,0 +1,126 @@
+// The global-buckling flag's rule (analysis/brace_indicators.hpp), driven with prescribed
+// node positions and forces so that each clause is tested on its own: the bow is measured
+// from the chord of the outer nodes, less the clearance for a casing, and counts only while
+// the brace loses compression strength (force drop, or an elastic plateau below P_y).
+#include "brb/analysis/brace_indicators.hpp"
+
+#include "support/brace_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace brb::analysis {
+namespace {
+
+/// The Girona D3 restrained brace (8 core elements) and a driver of its tracker: every node
+/// at its initial place plus a lateral offset along section z given per node.
+class GlobalBucklingFlag : public ::testing::Test {
+protected:
+  GlobalBucklingFlag()
+      : brace_(model::build_brace_model(test::girona_d3_restrained(8))),
+        tracker_(brace_, brace_.model) {}
+
+  /// Observes the state whose node n sits at its initial place + offset(n) along section z.
+  template <class Offset> void observe(const Offset& offset, double deformation, double force) {
+    positions_.clear();
+    for (int node = 0; node < brace_.model.node_count(); ++node)
+      positions_.push_back(brace_.model.coordinates(node) + offset(node) * brace_.axes.col(2));
+    tracker_.observe([&](int node) -> const element::Vector3& { return positions_[node]; },
+                     deformation, force);
+  }
+
+  /// A half-sine bow of the casing with the given amplitude (mm); core and ends stay put.
+  void observe_casing_bow(double amplitude, double deformation, double force) {
+    const auto& casing = *brace_.casing;
+    const double first = brace_.model.coordinates(casing.nodes.front()).x();
+    const double last = brace_.model.coordinates(casing.nodes.back()).x();
+    observe(
+        [&](int node) {
+          for (const int casing_node : casing.nodes) {
+            if (casing_node == node) {
+              const double x = brace_.model.coordinates(node).x();
+              return amplitude * std::sin(std::numbers::pi * (x - first) / (last - first));
+            }
+          }
+          return 0.0;
+        },
+        deformation, force);
+  }
+
+  double threshold() const { return 2196.0 / 250.0; } // L_y / 250 of Girona D3
+  double gap() const { return brace_.casing->interior_link.gap_z; }
+  double dy() const { return brace_.yield_deformation; }
+  double py() const { return brace_.yield_force; }
+
+  model::BraceModel brace_;
+  BraceIndicatorTracker tracker_;
+  std::vector<element::Vector3> positions_;
+};
+
+TEST_F(GlobalBucklingFlag, ARigidSidewaysMotionOfTheWholeBraceIsNoBow) {
+  // as a brace in a frame whose floors drift: every node, the ends included, 50 mm sideways,
+  // while the force falls (rule: offsets from the current chord)
+  observe([](int) { return 50.0; }, -0.5 * dy(), -0.5 * py());
+  observe([](int) { return 50.0; }, -1.0 * dy(), -0.2 * py());
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
+}
+
+TEST_F(GlobalBucklingFlag, ACasingShiftedWithinItsGapIsNoBow) {
+  // the casing moves sideways by more than L_y / 250 but by less than that plus the gap
+  const double shift = threshold() + 0.5 * gap();
+  const auto& casing = *brace_.casing;
+  const auto offset = [&](int node) {
+    for (const int casing_node : casing.nodes) {
+      if (casing_node == node)
+        return shift;
+    }
+    return 0.0;
+  };
+  observe(offset, -0.5 * dy(), -0.5 * py());
+  observe(offset, -1.0 * dy(), -0.2 * py());
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
+}
+
+TEST_F(GlobalBucklingFlag, ABowThatHoldsItsForceIsNoBuckle) {
+  // a swing sideways at small load that then holds: the force keeps rising at the elastic
+  // stiffness P_y / d_y, past yield
+  const double bow = gap() + 2.0 * threshold();
+  for (int k = 1; k <= 12; ++k)
+    observe_casing_bow(bow, -0.1 * k * dy(), -0.1 * k * py());
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
+  EXPECT_GT(tracker_.indicators().max_casing_lateral_displacement, threshold());
+}
+
+TEST_F(GlobalBucklingFlag, AnElasticPlateauBelowTheYieldForceIsABuckle) {
+  // the force rises elastically to 0.4 P_y, then stays there while the casing bows
+  const double bow = gap() + 2.0 * threshold();
+  for (int k = 1; k <= 4; ++k)
+    observe_casing_bow(0.1 * k * bow, -0.1 * k * dy(), -0.1 * k * py());
+  ASSERT_FALSE(tracker_.indicators().global_buckling); // bow still under the threshold
+  observe_casing_bow(bow, -0.5 * dy(), -0.41 * py());
+  EXPECT_TRUE(tracker_.indicators().global_buckling);
+}
+
+TEST_F(GlobalBucklingFlag, AForceDropWhileBowedIsABuckle) {
+  // past yield the compression force falls under 90 % of its peak
+  const double bow = gap() + 2.0 * threshold();
+  observe_casing_bow(0.0, -1.0 * dy(), -1.0 * py());
+  observe_casing_bow(0.0, -2.0 * dy(), -1.1 * py());
+  observe_casing_bow(bow, -2.5 * dy(), -1.05 * py()); // 95 % of the peak: not yet
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
+  observe_casing_bow(bow, -3.0 * dy(), -0.95 * py()); // 86 %
+  EXPECT_TRUE(tracker_.indicators().global_buckling);
+}
+
+TEST_F(GlobalBucklingFlag, NoBuckleWhileTheBraceIsStretched) {
+  const double bow = gap() + 2.0 * threshold();
+  observe_casing_bow(bow, 1.0 * dy(), 1.0 * py());
+  observe_casing_bow(bow, 0.5 * dy(), 0.2 * py());
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
+}
+
+} // namespace
+} // namespace brb::analysis
