@@ -52,8 +52,9 @@ TEST(StressGenerators, RandomHistoriesAreDeterministicAndFollowTheirDistribution
     EXPECT_EQ(first[k], expected) << k;
     EXPECT_LT(std::abs(first[k]), limit);
     // each turning point is a reversal: the legs alternate in direction
-    if (k > 0)
+    if (k > 0) {
       EXPECT_EQ(first[k] > previous, up) << k;
+    }
     previous = first[k];
     up = !up;
   }

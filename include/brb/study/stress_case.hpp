@@ -6,7 +6,6 @@
 #pragma once
 
 #include "brb/analysis/static_analysis.hpp"
-#include "brb/analysis/transient_analysis.hpp"
 #include "brb/frame/frame_builder.hpp"
 #include "brb/model/brace_spec.hpp"
 #include "brb/model/frame_spec.hpp"
