@@ -57,7 +57,7 @@ constexpr double kBarelyStiffEulerRatio = 1.1;
 
 /// The energy-error guard of the brace cases (NewtonSettings::energy_tolerance), below the
 /// acceptance's 1 %: the solver's default guard, 1e-2 of the gross work, is the acceptance
-/// limit itself on a net-work basis, and it was reached: on a random 20 dy history the
+/// limit itself, and runs came close to it: on a random 20 dy history the
 /// full brace with 4 core elements misfit 1.0 % of the net work (0.8 % of the gross) under
 /// the default guard and 2.5e-5 under 2e-3, at the same cost (962 steps, 1,028 against
 /// 1,038 substeps; README "Numerical stress tests").
