@@ -5,6 +5,7 @@
 #include "brb/model/dof_map.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -431,6 +432,7 @@ FrameRunResult run_time_history(FrameModel& frame,
   const auto step_count = static_cast<long>(std::ceil(result.duration / dt - 1e-9));
   result.converged = true;
   for (long n = 1; n <= step_count; ++n) {
+    const auto step_started = std::chrono::steady_clock::now();
     const double target = std::min(static_cast<double>(n) * dt, result.duration);
     const analysis::TransientStepReport report = solver->step(target - result.end_time);
     if (!report.converged) {
@@ -444,6 +446,10 @@ FrameRunResult run_time_history(FrameModel& frame,
     result.end_time = target;
     ++result.steps;
     const double drift = recorder.observe(target, *solver);
+    if (options.record_step_wall_times) {
+      result.step_wall_times.push_back(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - step_started).count());
+    }
     if (drift > options.drift_limit) {
       result.collapsed = true;
       std::ostringstream reason;

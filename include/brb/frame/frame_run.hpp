@@ -47,6 +47,9 @@ struct FrameRunOptions {
   RecorderRequest recorders;
   /// Ground-motion directions, one per component (global unit vectors).
   std::vector<Eigen::Vector3d> directions = {Eigen::Vector3d::UnitX()};
+  /// Time every dynamic step (steady clock, the solver's step and the recorders): the
+  /// stress suite's time-per-step distribution (FrameRunResult::step_wall_times).
+  bool record_step_wall_times = false;
 };
 
 /// A table of histories: a header and rows (one per recorded step).
@@ -86,6 +89,8 @@ struct FrameRunResult {
   double energy_balance_error = 0.0; ///< |error| / input energy
   std::vector<analysis::FallbackRecord> fallbacks;
   std::vector<BraceSummary> braces;
+  /// s, per converged dynamic step, when FrameRunOptions::record_step_wall_times asks.
+  std::vector<double> step_wall_times;
   std::map<std::string, History> histories; ///< only those asked
 };
 
