@@ -8,6 +8,7 @@
 
 #include "brb/analysis/transient_analysis.hpp"
 #include "brb/frame/frame_model.hpp"
+#include "brb/model/work_skips.hpp"
 
 #include <map>
 #include <string>
@@ -47,6 +48,10 @@ struct FrameRunOptions {
   RecorderRequest recorders;
   /// Ground-motion directions, one per component (global unit vectors).
   std::vector<Eigen::Vector3d> directions = {Eigen::Vector3d::UnitX()};
+  /// Work skips; the run reads requested_recorders (off: every history is computed, all
+  /// braces included, and those not asked are dropped at the end: the benchmark's
+  /// reference). The element switches are build_frame's.
+  model::WorkSkips skips;
 };
 
 /// A table of histories: a header and rows (one per recorded step).
