@@ -186,8 +186,9 @@ TEST(WorkSkips, ExactSkipsLeaveTheRestrainedBraceCyclicTestUnchanged) {
     for (std::size_t k = 0; k < run.force.size(); ++k)
       ASSERT_TRUE(same_bits(run.force[k], all_on.force[k])) << "step " << k;
     EXPECT_TRUE(same_bits(run.dissipated, all_on.dissipated));
-    if (!skips.open_links)
+    if (!skips.open_links) {
       EXPECT_EQ(run.open_evaluations, 0);
+    }
   }
 }
 

@@ -36,7 +36,8 @@
 // its internal brace again. The implicit frame solver's predictor is the committed
 // configuration, so every step of an elastic brace saves one internal solve. Not bit-exact:
 // a re-solve would restart from the converged internal state and land within the internal
-// solver's tolerance of the same answer (`brb bench skips` measures the difference).
+// solver's tolerance of the same equilibrium, or, for a core in contact with its casing (many
+// near-equal equilibria), of a neighbouring one (`brb bench skips` measures the difference).
 #pragma once
 
 #include "brb/analysis/brace_indicators.hpp"

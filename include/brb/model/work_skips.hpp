@@ -12,8 +12,10 @@
 //   reuse_tangents      BRBElement (condensed): an element asked again at the configuration of
 //                       its last evaluation, whose committed history has not changed since
 //                       (no dissipation), returns that evaluation's forces and tangent instead
-//                       of solving its internal brace again. Exact up to the internal solver's
-//                       tolerance (a re-solve restarts from a different internal state).
+//                       of solving its internal brace again. Not bit-exact: a re-solve starts
+//                       from another internal state and may land on a slightly different
+//                       internal equilibrium (the core in contact has many near-equal ones);
+//                       `brb bench skips` measures the difference.
 //   requested_recorders frame recorders build only the histories asked for. Exact.
 //   auto_fidelity       `auto` braces run as `truss` where the rule of brace_fidelity.hpp says
 //                       so; off, every `auto` brace runs as `full`. Not exact: the bench

@@ -5,9 +5,11 @@
 // from the first storey of a frame file: its column and beam sections, the first brace of
 // that storey (its work points give the bay's width and height), the mass of its first
 // floor node on every floor node, its damping and analysis settings. The braces alternate in
-// direction from bay to bay; the columns are fixed at the base. Every bay is alike, so the
-// dynamics, hence the iterations per step, do not change with N: the cost grows with the
-// size of the model alone. Record lengths: the first L seconds of one record.
+// direction from bay to bay; the columns are fixed at the base. The bays are alike, so the
+// cost grows with the size of the model; the response is not quite the same for every N
+// (N + 1 columns and floor masses for N braces: the mass per brace falls from 2 to 1 floor
+// masses as N grows, and the peak drift with it). Record lengths: the first L seconds of
+// one record.
 #pragma once
 
 #include "brb/frame/frame_builder.hpp"
