@@ -1,6 +1,7 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
 #include "bench_stress_command.hpp"
+#include "bench_skips_command.hpp"
 #include "calibrate_command.hpp"
 #include "check_command.hpp"
 #include "cyclic_command.hpp"
@@ -46,10 +47,16 @@ int main(int argc, char** argv) {
   const CLI::App* spectrum = brb::cli::add_spectrum_command(app, spectrum_command);
   brb::cli::CheckCommand check_command;
   const CLI::App* check = brb::cli::add_check_command(app, check_command);
-  CLI::App* bench = app.add_subcommand("bench", "Benchmarks and numerical studies");
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks and numerical studies of the model's "
+                                                "cost, accuracy and robustness.");
   bench->require_subcommand(1);
   brb::cli::BenchStressCommand bench_stress_command;
   const CLI::App* bench_stress = brb::cli::add_bench_stress_command(*bench, bench_stress_command);
+  brb::cli::BenchSkipsCommand bench_skips_command;
+  const CLI::App* bench_skips = brb::cli::add_bench_skips_command(*bench, bench_skips_command);
+  brb::cli::BenchScalingCommand bench_scaling_command;
+  const CLI::App* bench_scaling =
+      brb::cli::add_bench_scaling_command(*bench, bench_scaling_command);
 
   try {
     app.parse(argc, argv);
@@ -82,6 +89,10 @@ int main(int argc, char** argv) {
       return brb::cli::run_check_command(check_command, std::cout, std::cerr);
     if (bench_stress->parsed())
       return brb::cli::run_bench_stress_command(bench_stress_command, std::cout);
+    if (bench_skips->parsed())
+      return brb::cli::run_bench_skips_command(bench_skips_command, std::cout);
+    if (bench_scaling->parsed())
+      return brb::cli::run_bench_scaling_command(bench_scaling_command, std::cout);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

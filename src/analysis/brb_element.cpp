@@ -7,6 +7,19 @@
 #include <string>
 
 namespace brb::analysis {
+namespace {
+
+bool same_configuration(std::span<const element::NodeConfiguration> configuration,
+                        const std::array<element::NodeConfiguration, 2>& last) {
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (configuration[k].position != last[k].position ||
+        configuration[k].rotation != last[k].rotation)
+      return false;
+  }
+  return true;
+}
+
+} // namespace
 
 using element::Matrix3;
 using element::NodeConfiguration;
@@ -14,11 +27,11 @@ using element::Vector3;
 
 BRBElement::BRBElement(std::array<int, 2> nodes, const Vector3& start, const Vector3& end,
                        const model::BraceSpec& spec, std::optional<Vector3> section_z,
-                       NewtonSettings settings)
+                       NewtonSettings settings, const model::WorkSkips& skips)
     : nodes_(nodes), placement_(model::BracePlacement::between(start, end, section_z)),
-      length_((end - start).norm()), work_(model::build_brace_model(spec)),
-      committed_model_(model::build_brace_model(spec)), analysis_(work_.model, settings),
-      tracker_(work_, work_.model) {
+      length_((end - start).norm()), work_(model::build_brace_model(spec, skips)),
+      committed_model_(model::build_brace_model(spec, skips)), analysis_(work_.model, settings),
+      tracker_(work_, work_.model), reuse_tangents_(skips.reuse_tangents) {
   const double total = spec.total_length();
   if (std::abs(length_ - total) > 1e-9 * total) {
     throw ParameterError("element/nodes", "the outer nodes must be the brace's length apart (" +
@@ -39,6 +52,14 @@ void BRBElement::restore_committed_internal_state() {
 
 bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
                           Eigen::MatrixXd& tangent, std::string& failure) {
+  if (reuse_tangents_ && last_.valid && same_configuration(configuration, last_.configuration)) {
+    force = last_.force;
+    tangent = last_.tangent;
+    trial_ = last_.outputs;
+    ++reused_evaluations_;
+    return true;
+  }
+  last_.valid = false;
   const Matrix3& axes = placement_.axes;
   std::array<NodeConfiguration, 2> local;
   for (std::size_t k = 0; k < 2; ++k) {
@@ -77,6 +98,13 @@ bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration, Eige
           axes * condensed.block<3, 3>(3 * a, 3 * b) * axes.transpose();
   }
   trial_ = outputs_of_internal_state();
+  if (reuse_tangents_) {
+    last_.valid = true;
+    last_.configuration = {configuration[0], configuration[1]};
+    last_.force = force;
+    last_.tangent = tangent;
+    last_.outputs = trial_;
+  }
   return true;
 }
 
@@ -103,6 +131,10 @@ BRBElement::Outputs BRBElement::outputs_of_internal_state() const {
 }
 
 void BRBElement::commit() {
+  // A committed step that dissipated (plastic flow, damage, slip, a jump) changed the history
+  // the last evaluation started from: it cannot be reused any more.
+  if (trial_.energy.dissipated != committed_.energy.dissipated)
+    last_.valid = false;
   if (!work_is_committed_) {
     committed_model_.model.copy_element_states_from(work_.model);
     committed_path_ = analysis_.path_state();
@@ -128,6 +160,7 @@ void BRBElement::copy_state_from(const Element& other) {
   tracker_.rebind(work_, work_.model);
   trial_ = twin.trial_;
   committed_ = twin.committed_;
+  last_ = twin.last_;
 }
 
 } // namespace brb::analysis

@@ -19,7 +19,8 @@ void BraceTrussParameters::validate() const {
 }
 
 BraceTruss::BraceTruss(std::array<int, 2> nodes, const Vector3& position_i,
-                       const Vector3& position_j, const BraceTrussParameters& parameters)
+                       const Vector3& position_j, const BraceTrussParameters& parameters,
+                       bool elastic_fast_path)
     : nodes_(nodes), initial_length_((position_j - position_i).norm()), parameters_(parameters),
       // one material point over the yielding zone: its characteristic length is L_y
       law_((parameters.validate(), parameters.steel), parameters.yielding_length),
@@ -27,6 +28,7 @@ BraceTruss::BraceTruss(std::array<int, 2> nodes, const Vector3& position_i,
   if (!(parameters.yielding_length <= initial_length_ * (1.0 + 1e-12)))
     throw ParameterError("yielding_length", "the yielding length must not exceed the brace's "
                                             "length (the outer nodes' distance)");
+  law_.set_elastic_fast_path(elastic_fast_path);
 }
 
 double BraceTruss::elastic_stiffness() const {

@@ -32,12 +32,40 @@ void CasingContactParameters::validate() const {
 
 CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
                              const Vector3& casing_position,
-                             const CasingContactParameters& parameters)
+                             const CasingContactParameters& parameters, bool skip_open_links)
     : nodes_(nodes), initial_offset_(core_position - casing_position), parameters_(parameters),
       bearing_{material::MortarUniaxial((parameters.validate(), parameters.mortar),
                                         parameters.bearing_depth_y),
                material::MortarUniaxial(parameters.mortar, parameters.bearing_depth_z)},
-      friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}) {}
+      friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}),
+      skip_open_links_(skip_open_links) {
+  Eigen::VectorXd unused_force;
+  scatter(Vector3::Zero(), open_local_tangent(), unused_force, open_tangent_);
+}
+
+Matrix3 CasingContact::open_local_tangent() const {
+  // The general path's sums with no face penetrated: 0 + k_layer on y and z, and friction's
+  // zero tangent (F6 of penalty_friction.cpp) on the axis.
+  Matrix3 local_tangent = Matrix3::Zero();
+  local_tangent(1, 1) += parameters_.layer_stiffness;
+  local_tangent(2, 2) += parameters_.layer_stiffness;
+  return local_tangent;
+}
+
+void CasingContact::scatter(const Vector3& local_force, const Matrix3& local_tangent,
+                            Eigen::VectorXd& force, Eigen::MatrixXd& tangent) const {
+  const Matrix3& axes = parameters_.axes;
+  const Vector3 global_force = axes * local_force;
+  const Matrix3 global_tangent = axes * local_tangent * axes.transpose();
+  force = Eigen::VectorXd::Zero(12);
+  tangent = Eigen::MatrixXd::Zero(12, 12);
+  force.segment<3>(0) = global_force;
+  force.segment<3>(6) = -global_force;
+  tangent.block<3, 3>(0, 0) = global_tangent;
+  tangent.block<3, 3>(0, 6) = -global_tangent;
+  tangent.block<3, 3>(6, 0) = -global_tangent;
+  tangent.block<3, 3>(6, 6) = global_tangent;
+}
 
 bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
                              Eigen::VectorXd& force, Eigen::MatrixXd& tangent,
@@ -47,6 +75,25 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
       axes.transpose() * (configuration[0].position - configuration[1].position - initial_offset_);
   trial_ = committed_;
   trial_.bearing_strain.fill(0.0);
+
+  if (skip_open_links_ && !(std::abs(relative_[1]) - parameters_.gap_y > 0.0) &&
+      !(std::abs(relative_[2]) - parameters_.gap_z > 0.0)) {
+    // Open link: the layer springs only. The state changes as the general path changes it:
+    // faces as committed, the friction slip follows the axial motion (F6).
+    ++open_evaluations_;
+    trial_.friction.slip = Eigen::Vector2d(relative_[0], 0.0);
+    Vector3 local_force = Vector3::Zero();
+    local_force[1] += parameters_.layer_stiffness * relative_[1];
+    local_force[2] += parameters_.layer_stiffness * relative_[2];
+    in_contact_ = false;
+    link_force_ = local_force;
+    force = Eigen::VectorXd::Zero(12);
+    const Vector3 global_force = parameters_.axes * local_force;
+    force.segment<3>(0) = global_force;
+    force.segment<3>(6) = -global_force;
+    tangent = open_tangent_;
+    return true;
+  }
 
   // Bearing on each face: penetration p = |u| - gap on the side the core moves to; the
   // mortar is compressed at strain -p / depth. Faces not penetrated cost nothing.
@@ -95,17 +142,7 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   local_tangent(0, 0) = friction.tangent(1, 1);
   local_tangent.row(0) += friction.tangent(1, 0) * normal_rate;
   link_force_ = local_force;
-
-  const Vector3 global_force = axes * local_force;
-  const Matrix3 global_tangent = axes * local_tangent * axes.transpose();
-  force = Eigen::VectorXd::Zero(12);
-  tangent = Eigen::MatrixXd::Zero(12, 12);
-  force.segment<3>(0) = global_force;
-  force.segment<3>(6) = -global_force;
-  tangent.block<3, 3>(0, 0) = global_tangent;
-  tangent.block<3, 3>(0, 6) = -global_tangent;
-  tangent.block<3, 3>(6, 0) = -global_tangent;
-  tangent.block<3, 3>(6, 6) = global_tangent;
+  scatter(local_force, local_tangent, force, tangent);
   return true;
 }
 

@@ -20,8 +20,9 @@ using model::kDofPerNode;
 
 class Builder {
 public:
-  Builder(const model::FrameSpec& spec, const std::string& source, BraceOverride braces)
-      : spec_(spec), source_(source), braces_(braces) {}
+  Builder(const model::FrameSpec& spec, const std::string& source, BraceOverride braces,
+          const model::WorkSkips& skips)
+      : spec_(spec), source_(source), braces_(braces), skips_(skips) {}
 
   FrameModel build() {
     frame_.title = spec_.title;
@@ -146,9 +147,11 @@ private:
       if (k < beam.subdivisions)
         frame_.node_ids.push_back(-element.id); // an internal node of element `id`
       std::vector<model::CoreSection> sections;
-      for (const double weight : integration.weights)
-        sections.emplace_back(layout, material::SteelUniaxial(beam.steel, weight * element_length),
-                              shear);
+      for (const double weight : integration.weights) {
+        material::SteelUniaxial law(beam.steel, weight * element_length);
+        law.set_elastic_fast_path(skips_.elastic_fast_path);
+        sections.emplace_back(layout, law, shear);
+      }
       place(element,
             std::make_unique<model::CoreBeam>(std::array<int, 2>{previous, next},
                                               position(previous), position(next), orientation,
@@ -186,6 +189,11 @@ private:
     case model::BraceFidelity::full:
       break;
     case model::BraceFidelity::automatic: {
+      if (!skips_.auto_fidelity) {
+        // WorkSkips::auto_fidelity off: no brace is let off as a truss
+        reference.fidelity_reason = "auto: full (the auto skip is switched off)";
+        break;
+      }
       const model::FidelityChoice choice = model::choose_auto_fidelity(brace.brace);
       fidelity = choice.fidelity;
       reference.fidelity_reason = "auto: " + choice.reason;
@@ -196,8 +204,9 @@ private:
     const element::BraceTrussParameters truss = model::truss_parameters(brace.brace);
     reference.yield_force = brace.brace.steel.yield_stress * truss.core_area;
     if (fidelity == model::Fidelity::truss) {
-      auto built = std::make_unique<element::BraceTruss>(std::array<int, 2>{start, end},
-                                                         position(start), position(end), truss);
+      auto built =
+          std::make_unique<element::BraceTruss>(std::array<int, 2>{start, end}, position(start),
+                                                position(end), truss, skips_.elastic_fast_path);
       reference.truss = built.get();
       reference.yield_deformation = reference.yield_force / built->elastic_stiffness();
       reference.fidelity = "truss";
@@ -206,9 +215,9 @@ private:
       if (brace.mode == model::ElementMode::expanded)
         throw ParameterError("mode", "an expanded brace is not available in frames yet: use "
                                      "\"mode\": \"condensed\"");
-      auto built =
-          std::make_unique<analysis::BRBElement>(std::array<int, 2>{start, end}, position(start),
-                                                 position(end), brace.brace, brace.orientation);
+      auto built = std::make_unique<analysis::BRBElement>(
+          std::array<int, 2>{start, end}, position(start), position(end), brace.brace,
+          brace.orientation, analysis::NewtonSettings{}, skips_);
       reference.full = built.get();
       reference.yield_deformation = built->internal_brace().yield_deformation;
       reference.fidelity = "full";
@@ -251,6 +260,7 @@ private:
   const model::FrameSpec& spec_;
   const std::string& source_;
   BraceOverride braces_;
+  model::WorkSkips skips_;
   FrameModel frame_;
   std::unordered_map<int, int> index_;
 };
@@ -329,8 +339,8 @@ std::string_view brace_override_name(BraceOverride braces) {
 }
 
 FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
-                       BraceOverride braces) {
-  return Builder(spec, source, braces).build();
+                       BraceOverride braces, const model::WorkSkips& skips) {
+  return Builder(spec, source, braces, skips).build();
 }
 
 } // namespace brb::frame

@@ -79,7 +79,8 @@ public:
 class Recorder {
 public:
   Recorder(const FrameModel& frame, const FrameRunOptions& options, FrameRunResult& result)
-      : frame_(frame), options_(options), result_(result) {
+      : frame_(frame), options_(options), result_(result),
+        computed_(computed_histories(options, frame)) {
     result_.max_drift.assign(frame.stories.size(), 0.0);
     result_.residual_drift.assign(frame.stories.size(), 0.0);
     result_.peak_floor_acceleration.assign(frame.floors.size(), 0.0);
@@ -90,7 +91,7 @@ public:
       result_.braces.push_back(summary);
       last_brace_state_.push_back({0.0, 0.0});
     }
-    const RecorderRequest& asked = options.recorders;
+    const RecorderRequest& asked = computed_;
     if (asked.drifts) {
       History& drifts = result_.histories["drifts"];
       drifts.columns.push_back("time");
@@ -119,7 +120,7 @@ public:
       result_.histories["energy"].columns = {"time",    "input",  "static_work", "kinetic",
                                              "damping", "stored", "dissipated",  "error"};
     }
-    for (const int id : asked.braces) {
+    for (const int id : computed_.braces) {
       const auto found = std::find_if(frame.braces.begin(), frame.braces.end(),
                                       [id](const BraceReference& b) { return b.id == id; });
       if (found == frame.braces.end())
@@ -154,7 +155,7 @@ public:
       if (frame_.dimension == 3)
         drift_row.push_back(drift_y);
     }
-    if (options_.recorders.drifts)
+    if (computed_.drifts)
       result_.histories["drifts"].rows.push_back(std::move(drift_row));
 
     if (!frame_.floors.empty()) {
@@ -171,7 +172,7 @@ public:
         if (frame_.dimension == 3)
           row.push_back(absolute.y());
       }
-      if (options_.recorders.floor_accelerations)
+      if (computed_.floor_accelerations)
         result_.histories["floor_accelerations"].rows.push_back(std::move(row));
     }
 
@@ -181,7 +182,7 @@ public:
       shear += force.segment<2>(kDofPerNode * node);
     // the base shear is the sum of the support reactions (minus the elements' forces on them)
     result_.peak_base_shear = std::max(result_.peak_base_shear, shear.norm());
-    if (options_.recorders.base_shear) {
+    if (computed_.base_shear) {
       std::vector<double> row{time, -shear.x()};
       if (frame_.dimension == 3)
         row.push_back(-shear.y());
@@ -189,7 +190,7 @@ public:
     }
 
     const analysis::TransientEnergy& energy = solver.energy();
-    if (options_.recorders.energy) {
+    if (computed_.energy) {
       result_.histories["energy"].rows.push_back({time, energy.input, energy.static_work,
                                                   energy.kinetic, energy.damping, energy.stored,
                                                   energy.dissipated, energy.absolute_error()});
@@ -216,7 +217,54 @@ public:
     return largest_drift;
   }
 
+  /// Drops the histories computed but not asked (requested_recorders off).
+  void drop_unrequested() {
+    const RecorderRequest& asked = options_.recorders;
+    const std::pair<const char*, bool> kinds[] = {
+        {"drifts", asked.drifts},
+        {"floor_accelerations", asked.floor_accelerations},
+        {"base_shear", asked.base_shear},
+        {"energy", asked.energy}};
+    for (const auto& [name, wanted] : kinds) {
+      if (!wanted)
+        result_.histories.erase(name);
+    }
+    if (asked.braces.size() == computed_.braces.size())
+      return;
+    const auto found = result_.histories.find("braces");
+    if (found == result_.histories.end())
+      return;
+    if (asked.braces.empty()) {
+      result_.histories.erase(found);
+      return;
+    }
+    // keep the rows of the asked braces, in the order they were recorded
+    std::vector<std::vector<double>> kept;
+    for (std::vector<double>& row : found->second.rows) {
+      const int id = static_cast<int>(row[1]);
+      if (std::find(asked.braces.begin(), asked.braces.end(), id) != asked.braces.end())
+        kept.push_back(std::move(row));
+    }
+    found->second.rows = std::move(kept);
+  }
+
 private:
+  /// What the recorder computes: what was asked, or everything when the requested-recorders
+  /// skip is off (every history, every brace in the order asked first, then the others).
+  static RecorderRequest computed_histories(const FrameRunOptions& options,
+                                            const FrameModel& frame) {
+    RecorderRequest computed = options.recorders;
+    if (options.skips.requested_recorders)
+      return computed;
+    computed.drifts = computed.floor_accelerations = computed.base_shear = computed.energy = true;
+    for (const BraceReference& brace : frame.braces) {
+      if (std::find(computed.braces.begin(), computed.braces.end(), brace.id) ==
+          computed.braces.end())
+        computed.braces.push_back(brace.id);
+    }
+    return computed;
+  }
+
   void observe_brace(std::size_t b) {
     const BraceReference& brace = frame_.braces[b];
     BraceSummary& summary = result_.braces[b];
@@ -246,6 +294,7 @@ private:
   const FrameRunOptions& options_;
   FrameRunResult& result_;
   std::vector<std::pair<double, double>> last_brace_state_; // (force, deformation) per brace
+  RecorderRequest computed_;
   std::vector<int> recorded_braces_;
 };
 
@@ -459,6 +508,7 @@ FrameRunResult run_time_history(FrameModel& frame,
       break;
     }
   }
+  recorder.drop_unrequested();
   if (result.stop_reason.empty())
     result.stop_reason = "completed";
   result.energy = solver->energy();

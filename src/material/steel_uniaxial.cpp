@@ -31,10 +31,36 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
   const double trial_function =
       std::abs(relative_trial) - isotropic_.radius(committed.equivalent_plastic_strain);
 
+  const bool elastic = !(trial_function > kYieldTolerance * parameters_.yield_stress);
+  if (elastic && elastic_fast_path_) {
+    // Elastic fast path: no plastic increment, and (checked below) no damage growth, so the
+    // general path would leave the history as committed and book zero dissipation
+    // (record_step_dissipation adds 0 to each total); only the threshold's first value is set
+    // as it would be there. Stress and tangent are the same products as below.
+    double integrity = 1.0 - committed.damage;
+    bool damage_loads = false;
+    if (softening_) {
+      const double committed_threshold = committed.damage_threshold > 0.0
+                                             ? committed.damage_threshold
+                                             : softening_->initial_threshold();
+      if (committed.damage_threshold > 0.0)
+        integrity = softening_->integrity(committed_threshold);
+      const double energy_norm = std::abs(trial_stress) / std::sqrt(youngs);
+      damage_loads = energy_norm > committed_threshold * (1.0 + kDamageTolerance);
+      state.damage_threshold = committed_threshold;
+    }
+    if (!damage_loads) {
+      response.stress = integrity * trial_stress;
+      response.tangent = integrity * youngs;
+      return response;
+    }
+    state = committed; // damage loads: the general path below
+  }
+
   double effective_stress = trial_stress;
   double effective_tangent = youngs;
   double plastic_increment = 0.0;
-  if (trial_function > kYieldTolerance * parameters_.yield_stress) {
+  if (!elastic) {
     const auto beta_of = [&](double increment) {
       double beta = trial_stress;
       for (int k = 0; k < terms_.count; ++k) {

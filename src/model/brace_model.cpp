@@ -69,7 +69,8 @@ void check(bool condition, const std::string& field, const std::string& expected
 CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
                        const element::BeamIntegration& integration,
                        const std::vector<bool>& inside_casing,
-                       const std::vector<const SectionSpec*>& element_sections) {
+                       const std::vector<const SectionSpec*>& element_sections,
+                       const WorkSkips& skips) {
   const CasingSpec& casing = *spec.casing;
   check(casing.tube.shape == SectionShape::rectangular_tube ||
             casing.tube.shape == SectionShape::circular_tube,
@@ -133,9 +134,10 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     std::vector<CasingSection> sections;
     sections.reserve(integration.weights.size());
     for (const double weight : integration.weights) {
+      material::SteelUniaxial tube_law(tube_steel, weight * length);
+      tube_law.set_elastic_fast_path(skips.elastic_fast_path);
       sections.emplace_back(
-          section::FiberSection<material::SteelUniaxial>(
-              tube_layout, material::SteelUniaxial(tube_steel, weight * length), tube_shear),
+          section::FiberSection<material::SteelUniaxial>(tube_layout, tube_law, tube_shear),
           section::FiberSection<material::MortarUniaxial>(
               fill_layout, material::MortarUniaxial(casing.mortar, weight * length), mortar_shear));
     }
@@ -182,7 +184,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     link.tangential_stiffness = casing.tangential_stiffness_ratio * bearing_stiffness;
     const int core = result.core_nodes[n], shell = result.nodes[n];
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
-        std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link)));
+        std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link,
+        skips.open_links)));
     if (n == stations / 2)
       result.interior_link = link; // mid-length: a core station
   }
@@ -218,7 +221,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
 BraceHandles place(Model& model, const BraceSpec& spec,
                    const std::vector<std::pair<double, double>>& offsets,
                    const BracePlacement& placement, std::optional<std::array<int, 2>> ends,
-                   bool with_casing = true) {
+                   const WorkSkips& skips, bool with_casing = true) {
   check(spec.yielding_length > 0.0, "core/yielding_length", "must be > 0 mm");
   check(spec.core_elements >= 1, "core/elements", "must be >= 1");
   for (const auto* zone : {&spec.transition, &spec.connection}) {
@@ -274,8 +277,9 @@ BraceHandles place(Model& model, const BraceSpec& spec,
       sections.reserve(integration.weights.size());
       for (const double weight : integration.weights) {
         // each fiber's characteristic length: its integration weight times the element length
-        sections.emplace_back(layout, material::SteelUniaxial(spec.steel, weight * element_length),
-                              shear);
+        material::SteelUniaxial law(spec.steel, weight * element_length);
+        law.set_elastic_fast_path(skips.elastic_fast_path);
+        sections.emplace_back(layout, law, shear);
         const auto& softening = sections.back().law().softening();
         if (softening && softening->strength_lowered() && !lowered_warning_given) {
           std::ostringstream warning;
@@ -300,17 +304,18 @@ BraceHandles place(Model& model, const BraceSpec& spec,
   brace.start_node = brace.nodes.front();
   brace.end_node = brace.nodes.back();
   if (spec.casing && with_casing)
-    brace.casing = add_casing(model, brace, spec, integration, inside_casing, element_sections);
+    brace.casing =
+        add_casing(model, brace, spec, integration, inside_casing, element_sections, skips);
   return brace;
 }
 
 /// The stand-alone brace model along global x: the test set-up of `brb cyclic` (start node
 /// held, end node driven along x; pinned or fixed ends).
 BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, double>>& offsets,
-                 bool with_casing = true) {
+                 const WorkSkips& skips, bool with_casing = true) {
   BraceModel brace;
   static_cast<BraceHandles&>(brace) =
-      place(brace.model, spec, offsets, BracePlacement{}, {}, with_casing);
+      place(brace.model, spec, offsets, BracePlacement{}, {}, skips, with_casing);
   Model& model = brace.model;
   for (const Dof dof : {ux, uy, uz, rx})
     model.fix(brace.start_node, dof);
@@ -332,7 +337,7 @@ std::vector<std::pair<double, double>> imperfection_offsets(const BraceSpec& spe
         "imperfection/amplitude",
         "must be >= 0 and shorter than the brace (" + std::to_string(total) + " mm)");
   // node x positions of a straight model, for the offsets
-  BraceModel straight = build(spec, {}, /*with_casing=*/false);
+  BraceModel straight = build(spec, {}, WorkSkips{}, /*with_casing=*/false);
   std::vector<std::pair<double, double>> offsets(straight.nodes.size(), {0.0, 0.0});
   const double amplitude = spec.imperfection.amplitude;
   if (amplitude > 0.0) {
@@ -376,8 +381,8 @@ BracePlacement BracePlacement::between(const Vector3& start, const Vector3& end,
   return placement;
 }
 
-BraceModel build_brace_model(const BraceSpec& spec) {
-  return build(spec, imperfection_offsets(spec));
+BraceModel build_brace_model(const BraceSpec& spec, const WorkSkips& skips) {
+  return build(spec, imperfection_offsets(spec), skips);
 }
 
 element::BraceTrussParameters truss_parameters(const BraceSpec& spec) {
@@ -396,7 +401,7 @@ element::BraceTrussParameters truss_parameters(const BraceSpec& spec) {
   return parameters;
 }
 
-BraceModel build_brace_truss_model(const BraceSpec& spec) {
+BraceModel build_brace_truss_model(const BraceSpec& spec, const WorkSkips& skips) {
   const element::BraceTrussParameters parameters = truss_parameters(spec);
   BraceModel brace;
   Model& model = brace.model;
@@ -405,7 +410,7 @@ BraceModel build_brace_truss_model(const BraceSpec& spec) {
   brace.nodes = {brace.start_node, brace.end_node};
   brace.truss = &model.add_element(std::make_unique<element::BraceTruss>(
       std::array<int, 2>{brace.start_node, brace.end_node}, model.coordinates(brace.start_node),
-      model.coordinates(brace.end_node), parameters));
+      model.coordinates(brace.end_node), parameters, skips.elastic_fast_path));
   brace.core_area = parameters.core_area;
   brace.yield_force = spec.steel.yield_stress * parameters.core_area;
   brace.yield_deformation = brace.yield_force / brace.truss->elastic_stiffness();
@@ -423,7 +428,7 @@ BraceModel build_brace_truss_model(const BraceSpec& spec) {
 }
 
 BraceHandles add_brace_to_model(Model& model, const BraceSpec& spec, int start_node, int end_node,
-                                std::optional<Vector3> section_z) {
+                                std::optional<Vector3> section_z, const WorkSkips& skips) {
   check(start_node >= 0 && start_node < model.node_count() && end_node >= 0 &&
             end_node < model.node_count() && start_node != end_node,
         "element/nodes", "two distinct nodes of the model");
@@ -435,14 +440,14 @@ BraceHandles add_brace_to_model(Model& model, const BraceSpec& spec, int start_n
         "the outer nodes must be the brace's length apart (" + std::to_string(total) + " mm; got " +
             std::to_string(distance) + " mm)");
   return place(model, spec, imperfection_offsets(spec), placement,
-               std::array<int, 2>{start_node, end_node});
+               std::array<int, 2>{start_node, end_node}, skips);
 }
 
 std::vector<std::pair<double, double>> first_buckling_mode(const BraceSpec& spec) {
   // Linearised buckling of the perfect brace: K0 phi = lambda (K0 - K1) phi, with K1 the
   // tangent under a small elastic shortening; the geometric stiffness is linear in the
   // axial force for such a small step. The first mode has the largest 1/lambda.
-  BraceModel brace = build(spec, {}, /*with_casing=*/false);
+  BraceModel brace = build(spec, {}, WorkSkips{}, /*with_casing=*/false);
   analysis::StaticAnalysis analysis(brace.model);
   analysis.use_displacement_control(brace.end_node, ux);
   const Eigen::MatrixXd initial = Eigen::MatrixXd(analysis.free_tangent());

@@ -27,6 +27,17 @@
 // plus the energy the internal solver booked as released in jumps (pseudo-transient
 // continuation through a snap-through: that energy leaves the static system, like heat), so
 // that a global balance external work = stored + dissipated holds for the element.
+//
+// Reused tangent (WorkSkips::reuse_tangents, DESIGN.md section 10): asked again at the outer
+// configuration of its last evaluation (bit for bit), while its committed history is the one
+// that evaluation started from or differs from it by a step that dissipated nothing (no
+// plastic flow, damage, slip or jump: the internal brace is then elastic and path
+// independent), the element returns that evaluation's forces and tangent instead of solving
+// its internal brace again. The implicit frame solver's predictor is the committed
+// configuration, so every step of an elastic brace saves one internal solve. Not bit-exact:
+// a re-solve would restart from the converged internal state and land within the internal
+// solver's tolerance of the same equilibrium, or, for a core in contact with its casing (many
+// near-equal equilibria), of a neighbouring one (`brb bench skips` measures the difference).
 #pragma once
 
 #include "brb/analysis/brace_indicators.hpp"
@@ -46,7 +57,7 @@ public:
   /// ParameterError on an inconsistent spec or placement.
   BRBElement(std::array<int, 2> nodes, const element::Vector3& start, const element::Vector3& end,
              const model::BraceSpec& spec, std::optional<element::Vector3> section_z = std::nullopt,
-             NewtonSettings settings = {});
+             NewtonSettings settings = {}, const model::WorkSkips& skips = {});
   BRBElement(const BRBElement&) = delete;
   BRBElement& operator=(const BRBElement&) = delete;
 
@@ -72,6 +83,8 @@ public:
   /// Internal solver statistics since construction (all evaluations).
   int internal_iterations() const { return analysis_.total_iterations(); }
   int internal_regularised_steps() const { return analysis_.regularised_steps(); }
+  /// Evaluations answered from the last one (WorkSkips::reuse_tangents).
+  long reused_evaluations() const { return reused_evaluations_; }
 
 private:
   struct Outputs {
@@ -96,6 +109,18 @@ private:
   BraceIndicatorTracker tracker_;
   Outputs trial_;
   Outputs committed_;
+
+  /// The last successful evaluation, for WorkSkips::reuse_tangents.
+  struct LastEvaluation {
+    bool valid = false;
+    std::array<element::NodeConfiguration, 2> configuration;
+    Eigen::VectorXd force;
+    Eigen::MatrixXd tangent;
+    Outputs outputs;
+  };
+  bool reuse_tangents_ = true;
+  LastEvaluation last_;
+  long reused_evaluations_ = 0;
 };
 
 } // namespace brb::analysis

@@ -31,9 +31,10 @@ struct BraceTrussParameters {
 
 class BraceTruss final : public Element {
 public:
-  /// The distance between the reference positions is the brace's length.
+  /// The distance between the reference positions is the brace's length. `elastic_fast_path`:
+  /// SteelUniaxial::set_elastic_fast_path of the core's material point.
   BraceTruss(std::array<int, 2> nodes, const Vector3& position_i, const Vector3& position_j,
-             const BraceTrussParameters& parameters);
+             const BraceTrussParameters& parameters, bool elastic_fast_path = true);
 
   std::span<const int> nodes() const override { return nodes_; }
   bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,

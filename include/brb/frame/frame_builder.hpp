@@ -6,6 +6,7 @@
 #include "brb/frame/frame_model.hpp"
 #include "brb/frame/frame_run.hpp"
 #include "brb/model/frame_spec.hpp"
+#include "brb/model/work_skips.hpp"
 
 #include <optional>
 #include <string>
@@ -24,9 +25,11 @@ std::optional<BraceOverride> brace_override_named(std::string_view text);
 std::string_view brace_override_name(BraceOverride braces);
 
 /// `source` names the model file in errors: an element the element layer rejects raises an
-/// io::InputError at "/elements/<index>" with the element's message.
+/// io::InputError at "/elements/<index>" with the element's message. `skips`: the work skips
+/// of the elements and of `auto` (WorkSkips; the recorders' one is FrameRunOptions::skips).
 FrameModel build_frame(const model::FrameSpec& spec, const std::string& source,
-                       BraceOverride braces = BraceOverride::none);
+                       BraceOverride braces = BraceOverride::none,
+                       const model::WorkSkips& skips = {});
 
 /// The run options a frame file gives (integrator, step, damping, recorders, ground-motion
 /// directions). Brace histories: the ids listed; "all" is resolved against the built frame

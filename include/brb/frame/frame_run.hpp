@@ -8,6 +8,7 @@
 
 #include "brb/analysis/transient_analysis.hpp"
 #include "brb/frame/frame_model.hpp"
+#include "brb/model/work_skips.hpp"
 
 #include <map>
 #include <string>
@@ -50,6 +51,10 @@ struct FrameRunOptions {
   /// Time every dynamic step (steady clock, the solver's step and the recorders): the
   /// stress suite's time-per-step distribution (FrameRunResult::step_wall_times).
   bool record_step_wall_times = false;
+  /// Work skips; the run reads requested_recorders (off: every history is computed, all
+  /// braces included, and those not asked are dropped at the end: the benchmark's
+  /// reference). The element switches are build_frame's.
+  model::WorkSkips skips;
 };
 
 /// A table of histories: a header and rows (one per recorded step).

@@ -33,6 +33,12 @@ public:
                 LongElementRule rule = LongElementRule::lower_strength);
 
   State initial_state() const { return State{}; }
+  /// Elastic fast path (DESIGN.md section 10, on by default): below yield and below the
+  /// damage threshold, evaluate() returns E (times the integrity) and the committed state
+  /// without the energy bookkeeping of a plastic step, which would add exactly zero. Off:
+  /// every evaluation takes the general path (the benchmark's reference); same numbers.
+  void set_elastic_fast_path(bool enabled) { elastic_fast_path_ = enabled; }
+  bool elastic_fast_path() const { return elastic_fast_path_; }
   Response evaluate(const State& committed, double strain) const;
   double free_energy(const State& state, double strain) const;
   /// Energy dissipated so far per unit volume (MPa).
@@ -47,6 +53,7 @@ private:
   HardeningTerms terms_;
   IsotropicHardening isotropic_;
   std::optional<ExponentialSoftening> softening_;
+  bool elastic_fast_path_ = true;
 };
 
 } // namespace brb::material

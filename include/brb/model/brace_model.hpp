@@ -19,6 +19,7 @@
 #include "brb/material/steel_uniaxial.hpp"
 #include "brb/model/brace_spec.hpp"
 #include "brb/model/model.hpp"
+#include "brb/model/work_skips.hpp"
 #include "brb/section/composite_section.hpp"
 #include "brb/section/fiber_section.hpp"
 
@@ -91,8 +92,9 @@ struct BraceModel : BraceHandles {
 };
 
 /// Builds the model of the brace, with its casing when spec.casing is set. Throws
-/// ParameterError (with the key of the brace schema) on inconsistent geometry.
-BraceModel build_brace_model(const BraceSpec& spec);
+/// ParameterError (with the key of the brace schema) on inconsistent geometry. `skips`: the
+/// element- and material-level switches of WorkSkips (open links, elastic fast path).
+BraceModel build_brace_model(const BraceSpec& spec, const WorkSkips& skips = {});
 
 /// The `expanded` BRB element (DESIGN.md section 4): the brace's internal nodes and elements
 /// join `model` between two of its nodes, which must be the brace's length apart; the section
@@ -111,9 +113,10 @@ element::BraceTrussParameters truss_parameters(const BraceSpec& spec);
 /// The stand-alone brace as one BraceTruss along global x, with the supports of
 /// build_brace_model (every rotation held: the truss carries none). `nodes` = the two
 /// outer nodes; no beams, no casing.
-BraceModel build_brace_truss_model(const BraceSpec& spec);
+BraceModel build_brace_truss_model(const BraceSpec& spec, const WorkSkips& skips = {});
 
 BraceHandles add_brace_to_model(Model& model, const BraceSpec& spec, int start_node, int end_node,
-                                std::optional<Vector3> section_z = std::nullopt);
+                                std::optional<Vector3> section_z = std::nullopt,
+                                const WorkSkips& skips = {});
 
 } // namespace brb::model
