@@ -8,11 +8,9 @@ namespace {
 
 constexpr double kCrushedDamage = 0.9;       // a bearing face this damaged has crushed through
 constexpr double kGlobalBucklingRatio = 250; // lateral deflection beyond L_y / 250
-// ... while the brace, being shortened, either carries less than this fraction of its
-// largest compression so far (the bow costs it strength) ...
-constexpr double kGlobalBucklingForceRatio = 0.9;
-// ... or, below the yield force, stiffens by less than this fraction of its elastic axial
-// stiffness P_y / d_y (an elastic buckle: the force plateaus under the Euler load)
+// ... and, over a step that shortens the brace, the bow grows by more than the shortening
+// while the brace stiffens by less than this fraction of its elastic axial stiffness
+// P_y / d_y: the shortening goes into the bow, not into the core
 constexpr double kGlobalBucklingStiffnessRatio = 0.5;
 
 } // namespace
@@ -145,17 +143,14 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
   if (indicators.max_steel_damage >= kFractureDamage)
     indicators.core_fracture = true;
   const double shortening = previous_deformation_ - deformation; // > 0: shorter
-  peak_compression_ = std::max(peak_compression_, -force);
   if (yielding_length_ > 0.0 && global_bow > yielding_length_ / kGlobalBucklingRatio &&
-      shortening > 0.0 && force < 0.0) {
+      shortening > 0.0 && force < 0.0 && global_bow - previous_bow_ > shortening) {
     const double elastic_stiffness = brace.yield_force / brace.yield_deformation;
     const double step_stiffness = (previous_force_ - force) / shortening;
-    const bool weakened = -force < kGlobalBucklingForceRatio * peak_compression_;
-    const bool plateau = -force < brace.yield_force &&
-                         step_stiffness < kGlobalBucklingStiffnessRatio * elastic_stiffness;
-    if (weakened || plateau)
+    if (step_stiffness < kGlobalBucklingStiffnessRatio * elastic_stiffness)
       indicators.global_buckling = true;
   }
+  previous_bow_ = global_bow;
 
   indicators.cumulative_inelastic_deformation +=
       inelastic_deformation_increment(deformation - previous_deformation_, force - previous_force_,

@@ -1,13 +1,15 @@
 // The global-buckling flag's rule (analysis/brace_indicators.hpp), driven with prescribed
 // node positions and forces so that each clause is tested on its own: the bow is measured
-// from the chord of the outer nodes, less the clearance for a casing, and counts only while
-// the brace loses compression strength (force drop, or an elastic plateau below P_y).
+// from the chord of the outer nodes, less the clearance for a casing, and counts only over a
+// step whose shortening goes into the bow (it grows by more than the shortening while the
+// brace stiffens by less than half its elastic stiffness).
 #include "brb/analysis/brace_indicators.hpp"
 
 #include "support/brace_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -85,11 +87,12 @@ TEST_F(GlobalBucklingFlag, ACasingShiftedWithinItsGapIsNoBow) {
 }
 
 TEST_F(GlobalBucklingFlag, ABowThatHoldsItsForceIsNoBuckle) {
-  // a swing sideways at small load that then holds: the force keeps rising at the elastic
-  // stiffness P_y / d_y, past yield
+  // a swing sideways at small load that then holds: the bow appears in one step while the
+  // force rises at the elastic stiffness P_y / d_y, and stays while the core yields
   const double bow = gap() + 2.0 * threshold();
-  for (int k = 1; k <= 12; ++k)
-    observe_casing_bow(bow, -0.1 * k * dy(), -0.1 * k * py());
+  observe_casing_bow(bow, -0.1 * dy(), -0.1 * py());
+  for (int k = 2; k <= 30; ++k)
+    observe_casing_bow(bow, -0.1 * k * dy(), -std::min(0.1 * k, 1.0 + 0.001 * k) * py());
   EXPECT_FALSE(tracker_.indicators().global_buckling);
   EXPECT_GT(tracker_.indicators().max_casing_lateral_displacement, threshold());
 }
@@ -104,15 +107,24 @@ TEST_F(GlobalBucklingFlag, AnElasticPlateauBelowTheYieldForceIsABuckle) {
   EXPECT_TRUE(tracker_.indicators().global_buckling);
 }
 
-TEST_F(GlobalBucklingFlag, AForceDropWhileBowedIsABuckle) {
-  // past yield the compression force falls under 90 % of its peak
-  const double bow = gap() + 2.0 * threshold();
-  observe_casing_bow(0.0, -1.0 * dy(), -1.0 * py());
-  observe_casing_bow(0.0, -2.0 * dy(), -1.1 * py());
-  observe_casing_bow(bow, -2.5 * dy(), -1.05 * py()); // 95 % of the peak: not yet
+TEST_F(GlobalBucklingFlag, AForceDropWhileTheBowGrowsIsABuckle) {
+  // past yield, the bow grows from just over the threshold while the force falls
+  const double bow = gap() + 1.1 * threshold();
+  observe_casing_bow(0.0, -0.5 * dy(), -0.5 * py());
+  observe_casing_bow(bow, -1.0 * dy(), -1.0 * py()); // the bow appears, the force rises
+  observe_casing_bow(bow, -2.0 * dy(), -1.1 * py()); // the core yields, the bow stays
   EXPECT_FALSE(tracker_.indicators().global_buckling);
-  observe_casing_bow(bow, -3.0 * dy(), -0.95 * py()); // 86 %
+  observe_casing_bow(bow + 3.0 * dy(), -2.5 * dy(), -0.9 * py());
   EXPECT_TRUE(tracker_.indicators().global_buckling);
+}
+
+TEST_F(GlobalBucklingFlag, ABowThatStopsGrowingIsNoBuckle) {
+  // the core yields (the force barely rises) inside a bowed casing whose bow stays put
+  const double bow = gap() + 2.0 * threshold();
+  observe_casing_bow(bow, -0.5 * dy(), -0.5 * py());
+  for (int k = 1; k <= 20; ++k)
+    observe_casing_bow(bow, -(1.0 + 0.1 * k) * dy(), -(1.0 + 0.001 * k) * py());
+  EXPECT_FALSE(tracker_.indicators().global_buckling);
 }
 
 TEST_F(GlobalBucklingFlag, NoBuckleWhileTheBraceIsStretched) {

@@ -16,11 +16,11 @@ namespace brb::analysis {
 ///  - global buckling: the casing (or, without casing, the core) bowed laterally by more than
 ///    L_y / 250 (its offset from the current chord of the brace's outer nodes, less the
 ///    clearance (gap) per direction for a casing, which may shift sideways by that much
-///    without the brace bowing) while the brace, being shortened, either carried less than
-///    90 % of its largest compression so far, or stayed below P_y and stiffened by less
-///    than half its elastic stiffness P_y / d_y over the step (an elastic buckle). A bow
-///    alone is not instability: a casing on gaps at pinned ends can swing sideways at small
-///    load and then hold.
+///    without the brace bowing), and over a step that shortened the brace the bow grew by
+///    more than the shortening while the brace stiffened by less than half its elastic
+///    stiffness P_y / d_y (the shortening went into the bow: an elastic buckle, or a force
+///    drop). A bow alone is not instability: a casing on gaps at pinned ends can swing
+///    sideways at small load and then hold (the brace keeps its stiffness, the bow stops).
 struct BraceIndicators {
   double max_steel_damage = 0.0;  ///< largest damage of a core fiber
   double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
@@ -81,7 +81,7 @@ private:
   double yielding_length_ = 0.0;
   double previous_deformation_ = 0.0;
   double previous_force_ = 0.0;
-  double peak_compression_ = 0.0; ///< largest compressive force so far (N, >= 0)
+  double previous_bow_ = 0.0; ///< the global bow of the previous observed state (mm)
   BraceIndicators indicators_;
 };
 
