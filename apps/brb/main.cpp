@@ -1,5 +1,6 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
+#include "bench_pareto_command.hpp"
 #include "calibrate_command.hpp"
 #include "check_command.hpp"
 #include "cyclic_command.hpp"
@@ -45,6 +46,10 @@ int main(int argc, char** argv) {
   const CLI::App* spectrum = brb::cli::add_spectrum_command(app, spectrum_command);
   brb::cli::CheckCommand check_command;
   const CLI::App* check = brb::cli::add_check_command(app, check_command);
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks: run time against error.");
+  bench->require_subcommand(1);
+  brb::cli::BenchParetoCommand bench_pareto_command;
+  const CLI::App* bench_pareto = brb::cli::add_bench_pareto_command(*bench, bench_pareto_command);
 
   try {
     app.parse(argc, argv);
@@ -54,7 +59,7 @@ int main(int argc, char** argv) {
     }
     std::cerr << "brb: error: " << error.what() << "\n"
               << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, ida, "
-                 "validate, calibrate, spectrum) for usage.\n";
+                 "validate, calibrate, spectrum, check, bench) for usage.\n";
     return kInvalidInput;
   }
 
@@ -75,6 +80,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_spectrum_command(spectrum_command, std::cout);
     if (check->parsed())
       return brb::cli::run_check_command(check_command, std::cout, std::cerr);
+    if (bench_pareto->parsed())
+      return brb::cli::run_bench_pareto_command(bench_pareto_command, std::cout, std::cerr);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

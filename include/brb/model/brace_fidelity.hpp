@@ -31,6 +31,9 @@ struct FidelityChoice {
 
 inline constexpr double kEulerMargin = 2.25;
 inline constexpr double kTrussFrictionLimit = 0.15;
+/// The stated error bound of `auto` against the finest `full` setting, on every metric of the
+/// run-time-against-error study (bench/PARETO.md): measured, see the README.
+inline constexpr double kAutoErrorBound = 0.02;
 
 /// E I (N mm^2) of casing tube + mortar fill + core about the weaker section axis,
 /// from their fiber meshes.
