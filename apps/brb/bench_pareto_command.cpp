@@ -116,11 +116,10 @@ int run_bench_pareto_command(const BenchParetoCommand& command, std::ostream& re
     const std::lock_guard<std::mutex> guard(lock);
     notes << "brb bench pareto: " << line << std::endl;
   };
-  std::vector<study::CaseOutcome> outcomes;
+  const std::vector<study::CaseOutcome> outcomes = study::run_pareto_cases(cases, options);
   int status = kCompleted;
-  for (const study::ParetoCase& study_case : cases) {
-    outcomes.push_back(study::run_pareto_case(study_case, options));
-    const study::CaseOutcome& outcome = outcomes.back();
+  for (const study::CaseOutcome& outcome : outcomes) {
+    const study::ParetoCase& study_case = outcome.study_case;
     const study::SettingOutcome& reference = outcome.settings.at(study_case.reference);
     if (!reference.ran || !reference.stop_reason.empty()) {
       notes << "brb: error: " << study_case.matrix_file.string() << ": the reference setting \""

@@ -200,63 +200,82 @@ double median(std::vector<double> values) {
   return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-CaseOutcome run_pareto_case(const ParetoCase& study_case, const ParetoRunOptions& options) {
-  const CaseInputs inputs = read_inputs(study_case);
-  CaseOutcome outcome;
-  outcome.study_case = study_case;
-  for (const ParetoSetting& setting : study_case.settings) {
-    outcome.settings.emplace_back();
-    outcome.settings.back().setting = setting;
-  }
-  if (study_case.kind == CaseKind::frame) {
-    std::ostringstream window;
-    window << "the first " << study_case.duration << " s of "
-           << study_case.motion.filename().string() << " x " << study_case.scale;
-    outcome.window = window.str();
-  } else {
-    outcome.window = study_case.protocol.filename().string();
-  }
-
+std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
+                                          const ParetoRunOptions& options) {
+  // Every input first: a bad file stops the study before its first run.
+  std::vector<CaseInputs> inputs;
+  for (const ParetoCase& study_case : cases)
+    inputs.push_back(read_inputs(study_case));
+  std::vector<CaseOutcome> outcomes(cases.size());
+  // One pool of runs over all cases, costly ones first: frames' full settings before the
+  // components', so that the threads finish together.
   struct Job {
+    std::size_t study_case;
     std::size_t setting;
     int repeat;
   };
   std::vector<Job> jobs;
-  for (const std::size_t k : run_order(study_case.settings)) {
-    const int repeats =
-        options.repeats.value_or(study_case.settings[k].repeats.value_or(study_case.repeats));
-    for (int r = 0; r < repeats; ++r)
-      jobs.push_back({k, r});
+  for (const CaseKind kind : {CaseKind::frame, CaseKind::component}) {
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+      if (cases[c].kind != kind)
+        continue;
+      for (const std::size_t k : run_order(cases[c].settings)) {
+        if (cases[c].settings[k].fidelity != SettingFidelity::full)
+          continue;
+        const int repeats =
+            options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
+        for (int r = 0; r < repeats; ++r)
+          jobs.push_back({c, k, r});
+      }
+    }
   }
-  std::vector<std::vector<double>> times(study_case.settings.size());
-  std::vector<std::optional<RunResult>> first_runs(study_case.settings.size());
-  std::vector<std::string> failures(study_case.settings.size());
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    for (const std::size_t k : run_order(cases[c].settings)) {
+      if (cases[c].settings[k].fidelity == SettingFidelity::full)
+        continue;
+      const int repeats =
+          options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
+      for (int r = 0; r < repeats; ++r)
+        jobs.push_back({c, k, r});
+    }
+  }
+  std::vector<std::vector<std::vector<double>>> times(cases.size());
+  std::vector<std::vector<std::optional<RunResult>>> first_runs(cases.size());
+  std::vector<std::vector<std::string>> failures(cases.size());
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    times[c].resize(cases[c].settings.size());
+    first_runs[c].resize(cases[c].settings.size());
+    failures[c].resize(cases[c].settings.size());
+  }
   std::atomic<std::size_t> next{0};
   std::mutex lock;
   const auto work = [&]() {
     for (std::size_t j = next++; j < jobs.size(); j = next++) {
       const Job job = jobs[j];
+      const ParetoCase& study_case = cases[job.study_case];
       const ParetoSetting& setting = study_case.settings[job.setting];
       std::optional<RunResult> run;
       std::string failure;
       try {
-        run = study_case.kind == CaseKind::component ? run_component(study_case, inputs, setting)
-                                                     : run_frame(study_case, inputs, setting);
+        run = study_case.kind == CaseKind::component
+                  ? run_component(study_case, inputs[job.study_case], setting)
+                  : run_frame(study_case, inputs[job.study_case], setting);
       } catch (const std::exception& error) {
         failure = error.what();
       }
       const std::lock_guard<std::mutex> guard(lock);
+      auto& setting_times = times[job.study_case][job.setting];
       if (run) {
-        times[job.setting].push_back(run->wall_time);
-        if (!first_runs[job.setting])
-          first_runs[job.setting] = std::move(run);
-      } else if (failures[job.setting].empty()) {
-        failures[job.setting] = failure;
+        setting_times.push_back(run->wall_time);
+        if (!first_runs[job.study_case][job.setting])
+          first_runs[job.study_case][job.setting] = std::move(run);
+      } else if (failures[job.study_case][job.setting].empty()) {
+        failures[job.study_case][job.setting] = failure;
       }
       if (options.progress) {
-        options.progress(
-            study_case.name + ": " + setting.label + " run " + std::to_string(job.repeat + 1) +
-            ": " + (failure.empty() ? seconds(times[job.setting].back()) : "failed: " + failure));
+        options.progress(study_case.name + ": " + setting.label + " run " +
+                         std::to_string(job.repeat + 1) + ": " +
+                         (failure.empty() ? seconds(setting_times.back()) : "failed: " + failure));
       }
     }
   };
@@ -268,25 +287,44 @@ CaseOutcome run_pareto_case(const ParetoCase& study_case, const ParetoRunOptions
   for (std::thread& thread : pool)
     thread.join();
 
-  for (std::size_t k = 0; k < outcome.settings.size(); ++k) {
-    SettingOutcome& setting = outcome.settings[k];
-    setting.failure = failures[k];
-    setting.ran = failures[k].empty() && first_runs[k].has_value();
-    setting.wall_times = times[k];
-    setting.median_time = median(times[k]);
-    if (!first_runs[k])
-      continue;
-    const RunResult& run = *first_runs[k];
-    setting.built_as = run.built_as;
-    setting.auto_reason = run.auto_reason;
-    setting.component = run.component;
-    setting.frame = run.frame;
-    setting.stop_reason = run.stop_reason;
-    if (k == study_case.reference)
-      outcome.yield_deformation = run.yield_deformation;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const ParetoCase& study_case = cases[c];
+    CaseOutcome& outcome = outcomes[c];
+    outcome.study_case = study_case;
+    if (study_case.kind == CaseKind::frame) {
+      std::ostringstream window;
+      window << "the first " << study_case.duration << " s of "
+             << study_case.motion.filename().string() << " x " << study_case.scale;
+      outcome.window = window.str();
+    } else {
+      outcome.window = study_case.protocol.filename().string();
+    }
+    for (std::size_t k = 0; k < study_case.settings.size(); ++k) {
+      SettingOutcome setting;
+      setting.setting = study_case.settings[k];
+      setting.failure = failures[c][k];
+      setting.ran = failures[c][k].empty() && first_runs[c][k].has_value();
+      setting.wall_times = times[c][k];
+      setting.median_time = median(times[c][k]);
+      if (first_runs[c][k]) {
+        const RunResult& run = *first_runs[c][k];
+        setting.built_as = run.built_as;
+        setting.auto_reason = run.auto_reason;
+        setting.component = run.component;
+        setting.frame = run.frame;
+        setting.stop_reason = run.stop_reason;
+        if (k == study_case.reference)
+          outcome.yield_deformation = run.yield_deformation;
+      }
+      outcome.settings.push_back(std::move(setting));
+    }
+    evaluate_case(outcome);
   }
-  evaluate_case(outcome);
-  return outcome;
+  return outcomes;
+}
+
+CaseOutcome run_pareto_case(const ParetoCase& study_case, const ParetoRunOptions& options) {
+  return run_pareto_cases({study_case}, options).front();
 }
 
 void evaluate_case(CaseOutcome& outcome) {

@@ -1,7 +1,7 @@
 // The `auto` fidelity stays within its stated error bound (model::kAutoErrorBound, derived in
 // bench/PARETO.md from girona_D3, brbf3 and brbf9) on a case NOT used to derive it: Girona bar
 // D1 (bench/pareto/d1.json, "auto_rule": "check"), a smaller core in a smaller tube, against
-// the finest full setting of that matrix (16 core elements), on every metric of the study.
+// the finest full setting of that matrix (8 core elements), on every metric of the study.
 #include "brb/model/brace_fidelity.hpp"
 #include "brb/study/pareto_matrix.hpp"
 #include "brb/study/pareto_runner.hpp"

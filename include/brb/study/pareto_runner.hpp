@@ -48,8 +48,13 @@ struct ParetoRunOptions {
 /// The median of `values` (the mean of the two middle ones for an even count); 0 for none.
 double median(std::vector<double> values);
 
-/// Reads the case's inputs (brace, protocol, frame model, record: io::InputError on a bad
-/// one), runs every setting and measures its errors and the fronts.
+/// Reads every case's inputs (io::InputError on a bad one), then runs all their settings from
+/// one pool of `jobs` threads (costly runs first), and measures errors and fronts per case.
+std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
+                                          const ParetoRunOptions& options);
+
+/// run_pareto_cases for one case: reads the case's inputs (brace, protocol, frame model, record:
+/// io::InputError on a bad one), runs every setting and measures its errors and the fronts.
 CaseOutcome run_pareto_case(const ParetoCase& study_case, const ParetoRunOptions& options);
 
 /// Errors against the reference and the fronts, from the runs' responses and times (used by
