@@ -1,7 +1,8 @@
 // brb: the command-line program. Exit status: 0 success, 1 the run failed (analysis did
 // not converge, output could not be written, ...), 2 invalid input or usage.
-#include "bench_stress_command.hpp"
+#include "bench_pareto_command.hpp"
 #include "bench_skips_command.hpp"
+#include "bench_stress_command.hpp"
 #include "calibrate_command.hpp"
 #include "check_command.hpp"
 #include "cyclic_command.hpp"
@@ -57,6 +58,8 @@ int main(int argc, char** argv) {
   brb::cli::BenchScalingCommand bench_scaling_command;
   const CLI::App* bench_scaling =
       brb::cli::add_bench_scaling_command(*bench, bench_scaling_command);
+  brb::cli::BenchParetoCommand bench_pareto_command;
+  const CLI::App* bench_pareto = brb::cli::add_bench_pareto_command(*bench, bench_pareto_command);
 
   try {
     app.parse(argc, argv);
@@ -93,6 +96,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_bench_skips_command(bench_skips_command, std::cout);
     if (bench_scaling->parsed())
       return brb::cli::run_bench_scaling_command(bench_scaling_command, std::cout);
+    if (bench_pareto->parsed())
+      return brb::cli::run_bench_pareto_command(bench_pareto_command, std::cout, std::cerr);
   } catch (const brb::io::InputError& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;

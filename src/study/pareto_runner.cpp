@@ -1,0 +1,356 @@
+#include "brb/study/pareto_runner.hpp"
+
+#include "brb/analysis/cyclic_test.hpp"
+#include "brb/frame/frame_builder.hpp"
+#include "brb/frame/frame_run.hpp"
+#include "brb/io/brace_input.hpp"
+#include "brb/io/frame_input.hpp"
+#include "brb/io/ground_motion.hpp"
+#include "brb/io/protocol.hpp"
+#include "brb/model/brace_fidelity.hpp"
+#include "brb/model/brace_model.hpp"
+#include "brb/study/pareto_front.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <variant>
+
+namespace brb::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Default step of a component test without max_step: dy / 10 (as `brb cyclic`).
+constexpr double kDefaultMaxStepInDy = 0.1;
+
+/// The inputs of a case, read once before any run (every input error shows first).
+struct CaseInputs {
+  model::BraceSpec brace;              ///< component
+  model::FrameSpec frame;              ///< frame
+  analysis::GroundAcceleration ground; ///< frame: the window of the record
+};
+
+/// One run's result.
+struct RunResult {
+  double wall_time = 0.0;
+  std::string built_as;
+  std::string auto_reason;
+  ComponentResponse component;
+  FrameResponse frame;
+  std::string stop_reason;
+  double yield_deformation = 0.0;
+};
+
+model::Fidelity component_fidelity(const model::BraceSpec& brace, SettingFidelity fidelity,
+                                   std::string& reason) {
+  if (fidelity == SettingFidelity::truss)
+    return model::Fidelity::truss;
+  if (fidelity == SettingFidelity::full)
+    return model::Fidelity::full;
+  const model::FidelityChoice choice = model::choose_auto_fidelity(brace);
+  reason = choice.reason;
+  return choice.fidelity;
+}
+
+RunResult run_component(const ParetoCase& study_case, const CaseInputs& inputs,
+                        const ParetoSetting& setting) {
+  RunResult run;
+  const model::BraceSpec brace = setting.applied_to(inputs.brace);
+  const auto started = Clock::now();
+  const model::Fidelity fidelity = component_fidelity(brace, setting.fidelity, run.auto_reason);
+  model::BraceModel built = fidelity == model::Fidelity::truss
+                                ? model::build_brace_truss_model(brace)
+                                : model::build_brace_model(brace);
+  const double dy = built.yield_deformation;
+  // Not timed: the protocol is the same input for every setting (it depends on dy only).
+  const auto protocol_started = Clock::now();
+  const io::LoadingProtocol protocol = io::read_protocol(
+      study_case.protocol, dy, dy * setting.max_step.value_or(kDefaultMaxStepInDy));
+  const auto protocol_read = Clock::now();
+  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
+      built, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+  run.wall_time = std::chrono::duration<double>(Clock::now() - started).count() -
+                  std::chrono::duration<double>(protocol_read - protocol_started).count();
+  run.built_as = fidelity == model::Fidelity::truss ? "truss" : "full";
+  run.yield_deformation = dy;
+  run.component.completed = result.completed;
+  run.component.iterations = result.iterations;
+  for (const analysis::CycleMetrics& cycle : result.cycles)
+    run.component.cycles.push_back({cycle.energy, cycle.max_tension, cycle.max_compression});
+  run.stop_reason = result.stop_reason;
+  return run;
+}
+
+frame::BraceOverride override_of(SettingFidelity fidelity) {
+  switch (fidelity) {
+  case SettingFidelity::truss:
+    return frame::BraceOverride::truss;
+  case SettingFidelity::full:
+    return frame::BraceOverride::full;
+  case SettingFidelity::automatic:
+    return frame::BraceOverride::automatic;
+  }
+  return frame::BraceOverride::none;
+}
+
+RunResult run_frame(const ParetoCase& study_case, const CaseInputs& inputs,
+                    const ParetoSetting& setting) {
+  RunResult run;
+  model::FrameSpec spec = inputs.frame;
+  for (model::FrameElementSpec& element : spec.elements) {
+    if (auto* brace = std::get_if<model::BraceElementSpec>(&element.kind)) {
+      brace->brace = setting.applied_to(brace->brace);
+      brace->mode = setting.mode;
+    }
+  }
+  frame::FrameRunOptions options = frame::run_options_of(spec);
+  options.recorders = frame::RecorderRequest{false, false, false, false, {}};
+  if (setting.dt)
+    options.dt = *setting.dt;
+  if (!(options.dt > 0.0))
+    options.dt = inputs.ground.dt;
+  const auto started = Clock::now();
+  frame::FrameModel built =
+      frame::build_frame(spec, study_case.model.string(), override_of(setting.fidelity));
+  const frame::FrameRunResult result = frame::run_time_history(built, {inputs.ground}, options);
+  run.wall_time = std::chrono::duration<double>(Clock::now() - started).count();
+  for (const frame::BraceReference& brace : built.braces) {
+    (brace.fidelity == "truss" ? run.frame.truss_braces : run.frame.full_braces) += 1;
+    if (run.auto_reason.empty() && !brace.fidelity_reason.empty())
+      run.auto_reason = brace.fidelity_reason;
+  }
+  run.built_as = std::to_string(run.frame.truss_braces) + " truss; " +
+                 std::to_string(run.frame.full_braces) + " full";
+  run.frame.completed = result.converged && !result.collapsed;
+  run.frame.end_time = result.end_time;
+  run.frame.max_drift = result.max_drift;
+  run.frame.residual_drift = result.residual_drift;
+  for (const frame::BraceSummary& brace : result.braces)
+    run.frame.cid.push_back(brace.cumulative_inelastic_deformation);
+  if (result.stop_reason != "completed")
+    run.stop_reason = result.stop_reason;
+  return run;
+}
+
+CaseInputs read_inputs(const ParetoCase& study_case) {
+  CaseInputs inputs;
+  if (study_case.kind == CaseKind::component) {
+    inputs.brace = io::read_brace(study_case.brace);
+    // The protocol is checked here, with the brace's dy, so a bad one stops the study first.
+    const model::BraceModel truss = model::build_brace_truss_model(inputs.brace);
+    const double dy = truss.yield_deformation;
+    (void)io::read_protocol(study_case.protocol, dy, dy * kDefaultMaxStepInDy);
+    return inputs;
+  }
+  inputs.frame = io::read_frame(study_case.model);
+  io::GroundMotionOptions motion_options;
+  motion_options.scale = study_case.scale;
+  const io::GroundMotion motion = io::load_ground_motion(study_case.motion, motion_options);
+  const frame::FrameRunOptions options = frame::run_options_of(inputs.frame);
+  inputs.ground.direction = options.directions.front();
+  inputs.ground.dt = motion.dt;
+  inputs.ground.acceleration = motion.acceleration;
+  // The window: the samples at times up to `duration` (as `brb frame --duration`).
+  const auto samples =
+      static_cast<std::size_t>(std::floor(study_case.duration / motion.dt + 1e-9)) + 1;
+  if (samples < inputs.ground.acceleration.size())
+    inputs.ground.acceleration.resize(samples);
+  return inputs;
+}
+
+/// Costly settings first, so that the threads finish together: full before auto before
+/// truss, more core elements first.
+std::vector<std::size_t> run_order(const std::vector<ParetoSetting>& settings) {
+  std::vector<std::size_t> order(settings.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    order[k] = k;
+  const auto rank = [](SettingFidelity f) {
+    return f == SettingFidelity::full ? 0 : (f == SettingFidelity::automatic ? 1 : 2);
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const ParetoSetting& sa = settings[a];
+    const ParetoSetting& sb = settings[b];
+    if (rank(sa.fidelity) != rank(sb.fidelity))
+      return rank(sa.fidelity) < rank(sb.fidelity);
+    return sa.core_elements.value_or(0) > sb.core_elements.value_or(0);
+  });
+  return order;
+}
+
+std::string seconds(double value) {
+  std::ostringstream text;
+  text.precision(4);
+  text << value << " s";
+  return text.str();
+}
+
+} // namespace
+
+double median(std::vector<double> values) {
+  if (values.empty())
+    return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
+                                          const ParetoRunOptions& options) {
+  // Every input first: a bad file stops the study before its first run.
+  std::vector<CaseInputs> inputs;
+  for (const ParetoCase& study_case : cases)
+    inputs.push_back(read_inputs(study_case));
+  std::vector<CaseOutcome> outcomes(cases.size());
+  // One pool of runs over all cases, costly ones first: frames' full settings before the
+  // components', so that the threads finish together.
+  struct Job {
+    std::size_t study_case;
+    std::size_t setting;
+    int repeat;
+  };
+  std::vector<Job> jobs;
+  for (const CaseKind kind : {CaseKind::frame, CaseKind::component}) {
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+      if (cases[c].kind != kind)
+        continue;
+      for (const std::size_t k : run_order(cases[c].settings)) {
+        if (cases[c].settings[k].fidelity != SettingFidelity::full)
+          continue;
+        const int repeats =
+            options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
+        for (int r = 0; r < repeats; ++r)
+          jobs.push_back({c, k, r});
+      }
+    }
+  }
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    for (const std::size_t k : run_order(cases[c].settings)) {
+      if (cases[c].settings[k].fidelity == SettingFidelity::full)
+        continue;
+      const int repeats =
+          options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
+      for (int r = 0; r < repeats; ++r)
+        jobs.push_back({c, k, r});
+    }
+  }
+  std::vector<std::vector<std::vector<double>>> times(cases.size());
+  std::vector<std::vector<std::optional<RunResult>>> first_runs(cases.size());
+  std::vector<std::vector<std::string>> failures(cases.size());
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    times[c].resize(cases[c].settings.size());
+    first_runs[c].resize(cases[c].settings.size());
+    failures[c].resize(cases[c].settings.size());
+  }
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  const auto work = [&]() {
+    for (std::size_t j = next++; j < jobs.size(); j = next++) {
+      const Job job = jobs[j];
+      const ParetoCase& study_case = cases[job.study_case];
+      const ParetoSetting& setting = study_case.settings[job.setting];
+      std::optional<RunResult> run;
+      std::string failure;
+      try {
+        run = study_case.kind == CaseKind::component
+                  ? run_component(study_case, inputs[job.study_case], setting)
+                  : run_frame(study_case, inputs[job.study_case], setting);
+      } catch (const std::exception& error) {
+        failure = error.what();
+      }
+      const std::lock_guard<std::mutex> guard(lock);
+      auto& setting_times = times[job.study_case][job.setting];
+      if (run) {
+        setting_times.push_back(run->wall_time);
+        if (!first_runs[job.study_case][job.setting])
+          first_runs[job.study_case][job.setting] = std::move(run);
+      } else if (failures[job.study_case][job.setting].empty()) {
+        failures[job.study_case][job.setting] = failure;
+      }
+      if (options.progress) {
+        options.progress(study_case.name + ": " + setting.label + " run " +
+                         std::to_string(job.repeat + 1) + ": " +
+                         (failure.empty() ? seconds(setting_times.back()) : "failed: " + failure));
+      }
+    }
+  };
+  const int threads = std::max(1, std::min<int>(options.jobs, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(work);
+  work();
+  for (std::thread& thread : pool)
+    thread.join();
+
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const ParetoCase& study_case = cases[c];
+    CaseOutcome& outcome = outcomes[c];
+    outcome.study_case = study_case;
+    if (study_case.kind == CaseKind::frame) {
+      std::ostringstream window;
+      window << "the first " << study_case.duration << " s of "
+             << study_case.motion.filename().string() << " x " << study_case.scale;
+      outcome.window = window.str();
+    } else {
+      outcome.window = study_case.protocol.filename().string();
+    }
+    for (std::size_t k = 0; k < study_case.settings.size(); ++k) {
+      SettingOutcome setting;
+      setting.setting = study_case.settings[k];
+      setting.failure = failures[c][k];
+      setting.ran = failures[c][k].empty() && first_runs[c][k].has_value();
+      setting.wall_times = times[c][k];
+      setting.median_time = median(times[c][k]);
+      if (first_runs[c][k]) {
+        const RunResult& run = *first_runs[c][k];
+        setting.built_as = run.built_as;
+        setting.auto_reason = run.auto_reason;
+        setting.component = run.component;
+        setting.frame = run.frame;
+        setting.stop_reason = run.stop_reason;
+        if (k == study_case.reference)
+          outcome.yield_deformation = run.yield_deformation;
+      }
+      outcome.settings.push_back(std::move(setting));
+    }
+    evaluate_case(outcome);
+  }
+  return outcomes;
+}
+
+CaseOutcome run_pareto_case(const ParetoCase& study_case, const ParetoRunOptions& options) {
+  return run_pareto_cases({study_case}, options).front();
+}
+
+void evaluate_case(CaseOutcome& outcome) {
+  const ParetoCase& study_case = outcome.study_case;
+  const SettingOutcome& reference = outcome.settings.at(study_case.reference);
+  const bool reference_usable =
+      reference.ran && (study_case.kind == CaseKind::component ? reference.component.completed
+                                                               : reference.frame.completed);
+  std::vector<TimeErrorPoint> primary, worst;
+  for (SettingOutcome& setting : outcome.settings) {
+    setting.errors = ParetoErrors{};
+    if (setting.ran && reference_usable) {
+      setting.errors = study_case.kind == CaseKind::component
+                           ? component_errors(reference.component, setting.component)
+                           : frame_errors(reference.frame, setting.frame);
+    }
+    const double time = setting.ran ? setting.median_time : std::nan("");
+    primary.push_back({time, setting.errors.primary()});
+    worst.push_back({time, setting.errors.worst()});
+  }
+  const std::vector<bool> front_primary = pareto_front(primary);
+  const std::vector<bool> front_worst = pareto_front(worst);
+  for (std::size_t k = 0; k < outcome.settings.size(); ++k) {
+    outcome.settings[k].front_primary = front_primary[k];
+    outcome.settings[k].front_worst = front_worst[k];
+  }
+}
+
+} // namespace brb::study
