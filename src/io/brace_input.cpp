@@ -188,6 +188,25 @@ std::string millimetres(double value) {
   return text.str();
 }
 
+/// Where a section and its gaps leave no room for mortar inside the casing's tube: the first
+/// axis along which the tube's inside does not exceed the section's extent + 2 gaps.
+struct TubeMisfit {
+  const char* axis;
+  double inside; ///< the tube's inside (mm)
+  double needed; ///< the section's extent + 2 gaps (mm)
+};
+std::optional<TubeMisfit> misfit_in_tube(const model::CasingSpec& casing,
+                                         const SectionSpec& section) {
+  const auto [inside_y, inside_z] = tube_inside(casing.tube);
+  const auto [extent_y, extent_z] = model::core_extent(section);
+  for (const TubeMisfit& candidate : {TubeMisfit{"y", inside_y, extent_y + 2.0 * casing.gap_y},
+                                      TubeMisfit{"z", inside_z, extent_z + 2.0 * casing.gap_z}}) {
+    if (!(candidate.inside > candidate.needed))
+      return candidate;
+  }
+  return std::nullopt;
+}
+
 model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
                               const std::optional<model::ZoneSpec>& transition) {
   object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
@@ -294,34 +313,22 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
     }
   }
 
-  // The core and its gaps must fit inside the tube, leaving room for mortar.
-  const auto [inside_y, inside_z] = tube_inside(casing.tube);
-  const auto [extent_y, extent_z] = model::core_extent(core);
-  for (const auto& [axis, inside, extent, gap_size] :
-       {std::tuple{"y", inside_y, extent_y, casing.gap_y},
-        std::tuple{"z", inside_z, extent_z, casing.gap_z}}) {
-    const double needed = extent + 2.0 * gap_size;
-    if (!(inside > needed)) {
-      throw tube.error(
-          std::string("casing too thin for the core: along ") + axis + " the tube's inside, " +
-          millimetres(inside) + ", must exceed the core's extent + 2 gaps, " + millimetres(needed) +
-          ", to leave room for mortar (short by " + millimetres(needed - inside) + ")");
-    }
+  // The core and its gaps must fit inside the tube, leaving room for mortar; so must the
+  // transition's part inside the casing, which keeps the same clearances around its section.
+  if (const auto misfit = misfit_in_tube(casing, core)) {
+    throw tube.error(std::string("casing too thin for the core: along ") + misfit->axis +
+                     " the tube's inside, " + millimetres(misfit->inside) +
+                     ", must exceed the core's extent + 2 gaps, " + millimetres(misfit->needed) +
+                     ", to leave room for mortar (short by " +
+                     millimetres(misfit->needed - misfit->inside) + ")");
   }
   if (casing.overlap > 0.0) {
-    // the transition's part inside the casing keeps the same clearances around its section
-    const auto [transition_y, transition_z] = model::core_extent(transition->section);
-    for (const auto& [axis, inside, extent, gap_size] :
-         {std::tuple{"y", inside_y, transition_y, casing.gap_y},
-          std::tuple{"z", inside_z, transition_z, casing.gap_z}}) {
-      const double needed = extent + 2.0 * gap_size;
-      if (!(inside > needed)) {
-        throw object.at("overlap", "")
-            .error(std::string("the transition section does not fit inside the casing: along ") +
-                   axis + " the tube's inside, " + millimetres(inside) +
-                   ", must exceed the transition's extent + 2 gaps, " + millimetres(needed) +
-                   " (a casing overlap puts the transition inside the casing)");
-      }
+    if (const auto misfit = misfit_in_tube(casing, transition->section)) {
+      throw object.at("overlap", "")
+          .error(std::string("the transition section does not fit inside the casing: along ") +
+                 misfit->axis + " the tube's inside, " + millimetres(misfit->inside) +
+                 ", must exceed the transition's extent + 2 gaps, " + millimetres(misfit->needed) +
+                 " (a casing overlap puts the transition inside the casing)");
     }
   }
   // mortar_thickness throws when there is no room; the check above keeps that from happening,

@@ -32,31 +32,6 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
       std::abs(relative_trial) - isotropic_.radius(committed.equivalent_plastic_strain);
 
   const bool elastic = !(trial_function > kYieldTolerance * parameters_.yield_stress);
-  if (elastic && elastic_fast_path_) {
-    // Elastic fast path: no plastic increment, and (checked below) no damage growth, so the
-    // general path would leave the history as committed and book zero dissipation
-    // (record_step_dissipation adds 0 to each total); only the threshold's first value is set
-    // as it would be there. Stress and tangent are the same products as below.
-    double integrity = 1.0 - committed.damage;
-    bool damage_loads = false;
-    if (softening_) {
-      const double committed_threshold = committed.damage_threshold > 0.0
-                                             ? committed.damage_threshold
-                                             : softening_->initial_threshold();
-      if (committed.damage_threshold > 0.0)
-        integrity = softening_->integrity(committed_threshold);
-      const double energy_norm = std::abs(trial_stress) / std::sqrt(youngs);
-      damage_loads = energy_norm > committed_threshold * (1.0 + kDamageTolerance);
-      state.damage_threshold = committed_threshold;
-    }
-    if (!damage_loads) {
-      response.stress = integrity * trial_stress;
-      response.tangent = integrity * youngs;
-      return response;
-    }
-    state = committed; // damage loads: the general path below
-  }
-
   double effective_stress = trial_stress;
   double effective_tangent = youngs;
   double plastic_increment = 0.0;
@@ -105,6 +80,7 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
   }
 
   // Damage: tau = |sigma_bar| / sqrt(E) is the uniaxial energy norm.
+  bool damage_grows = false;
   double damage_term = 0.0;
   double integrity = 1.0 - committed.damage;
   if (softening_) {
@@ -116,6 +92,7 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
     const double energy_norm = std::abs(effective_stress) / std::sqrt(youngs);
     state.damage_threshold = committed_threshold;
     if (energy_norm > committed_threshold * (1.0 + kDamageTolerance)) {
+      damage_grows = true;
       state.damage_threshold = energy_norm;
       // 1 - d evaluated directly (exponential_softening.hpp), never increasing
       integrity = std::min(integrity, softening_->integrity(energy_norm));
@@ -127,6 +104,13 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
   }
   response.stress = integrity * effective_stress;
   response.tangent = integrity * effective_tangent - damage_term;
+  if (elastic && !damage_grows && elastic_fast_path_) {
+    // Elastic fast path: no plastic increment and no damage growth leave the history as
+    // committed (but for the threshold's first value, set above) and book zero dissipation
+    // (record_step_dissipation would add 0 to each total), so the energy bookkeeping is
+    // skipped.
+    return response;
+  }
 
   double recall_energy = 0.0;
   double hardening_energy = isotropic_.stored_energy(state.equivalent_plastic_strain);
