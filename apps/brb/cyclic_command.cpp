@@ -147,7 +147,8 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
       << count_of(result.iterations, "Newton iteration") << ", "
       << count_of(result.substeps, "substep") << ", "
       << count_of(result.regularised_steps, "regularised step") << ", "
-      << count_of(result.unstable_accepted, "unstable substep") << " accepted\n";
+      << count_of(result.unstable_accepted, "unstable substep") << " accepted, "
+      << count_of(result.far_branch_cuts, "far-branch cut") << "\n";
   const analysis::EnergyBalance& balance = result.energy_balance;
   out << "  energy balance: external work " << significant(balance.external_work, 6)
       << " N mm, stored " << significant(balance.stored, 6) << ", dissipated "

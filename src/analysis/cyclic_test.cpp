@@ -104,6 +104,7 @@ CyclicTestResult CyclicTest::result() const {
   result.regularised_steps = analysis_.regularised_steps();
   result.unstable_accepted = analysis_.unstable_accepted();
   result.energy_cuts = analysis_.energy_cuts();
+  result.far_branch_cuts = analysis_.far_branch_cuts();
   result.energy_tolerance_missed = analysis_.energy_tolerance_missed();
   result.indicators = tracker_.indicators();
   return result;

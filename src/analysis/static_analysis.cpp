@@ -10,7 +10,9 @@
 
 namespace brb::analysis {
 
+using element::Matrix3;
 using element::NodeConfiguration;
+using element::Vector3;
 using model::kDofPerNode;
 
 namespace {
@@ -315,19 +317,21 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
   return residual.lpNorm<Eigen::Infinity>() <= settings_.relative_force_tolerance * scale;
 }
 
-StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
+StaticAnalysis::Attempt StaticAnalysis::newton(double control,
+                                               const Eigen::SparseMatrix<double>* viscosity,
                                                int max_iterations) {
   Attempt attempt;
   bool assembled = false;
   Eigen::VectorXd residual;
-  // With viscosity c > 0 this is one backward-Euler step of the gradient flow
-  // c du/dtau = F_ext - F_int(u) (pseudo-time step 1): the residual gains -c (u - u_start),
-  // the tangent c I. `moved_` holds u - u_start of the free DOF (spins for rotations).
+  // With a viscosity C (free x free, symmetric positive definite) this is one backward-Euler step
+  // of the gradient flow C du/dtau = F_ext - F_int(u) (pseudo-time step 1): the residual
+  // gains -C (u - u_start), the tangent C. `moved_` holds u - u_start of the free DOF
+  // (spins for rotations).
   moved_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
   const auto pseudo_residual = [&] {
     Eigen::VectorXd r = free_residual(control);
-    if (viscosity > 0.0)
-      r -= viscosity * moved_;
+    if (viscosity != nullptr)
+      r -= (*viscosity) * moved_;
     return r;
   };
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
@@ -348,11 +352,13 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control, double viscosity,
       break;
 
     Eigen::SparseMatrix<double> matrix = tangent_;
-    if (viscosity > 0.0) {
-      for (Eigen::Index k = 0; k < matrix.rows(); ++k)
-        matrix.coeffRef(k, k) += viscosity;
-    }
-    if (!pattern_analysed_) {
+    if (viscosity != nullptr) {
+      // The viscosity's blocks may widen the pattern: analyse it for this matrix, and again
+      // for the next plain tangent.
+      matrix += *viscosity;
+      solver_.analyzePattern(matrix);
+      pattern_analysed_ = false;
+    } else if (!pattern_analysed_) {
       solver_.analyzePattern(matrix);
       pattern_analysed_ = true;
     }
@@ -481,7 +487,18 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       if (predictor.allFinite())
         apply_free_increment(predictor, 1.0);
     }
-    attempt = newton(to, 0.0, settings_.max_iterations);
+    const std::vector<NodeConfiguration> predicted = trial_;
+    attempt = newton(to, nullptr, settings_.max_iterations);
+    if (attempt.converged && !lands_near_predictor(predicted) && depth < settings_.max_halvings) {
+      // Newton converged far from where the tangent predicted: onto another branch (see
+      // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
+      ++report.far_branch_cuts;
+      ++far_branch_cuts_;
+      revert();
+      const double middle = 0.5 * (from + to);
+      return try_increment(from, middle, depth + 1, report) &&
+             try_increment(middle, to, depth + 1, report);
+    }
   }
   report.iterations += attempt.iterations;
   const bool at_floor = depth >= settings_.max_halvings;
@@ -494,6 +511,16 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
   }
   const StepEnergy step = attempt.converged ? trial_step_energy() : StepEnergy{};
+  if (attempt.converged && !dissipation_supplied_by_work(step) && depth < settings_.max_halvings) {
+    // The step dissipated stored energy the loading did not supply: it landed on another
+    // branch (NewtonSettings::max_correction_ratio). Cut it so the path is followed.
+    ++report.far_branch_cuts;
+    ++far_branch_cuts_;
+    revert();
+    const double middle = 0.5 * (from + to);
+    return try_increment(from, middle, depth + 1, report) &&
+           try_increment(middle, to, depth + 1, report);
+  }
   if (attempt.converged && !within_energy_tolerance(step)) {
     if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
       // A kink inside the step (yield, contact): halve it until the trapezoidal work and
@@ -540,6 +567,36 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   return false;
 }
 
+bool StaticAnalysis::lands_near_predictor(const std::vector<NodeConfiguration>& predicted) const {
+  if (!(settings_.max_correction_ratio > 0.0))
+    return true;
+  double prediction = 0.0, correction = 0.0;
+  for (std::size_t node = 0; node < trial_.size(); ++node) {
+    prediction =
+        std::max(prediction, (predicted[node].position - committed_[node].position).norm());
+    correction = std::max(correction, (trial_[node].position - predicted[node].position).norm());
+  }
+  // Round-off floor: positions carry ~1e-14 of the model's size.
+  return correction <= settings_.max_correction_ratio * prediction +
+                           1e3 * settings_.position_round_off * model_extent_;
+}
+
+bool StaticAnalysis::dissipation_supplied_by_work(const StepEnergy& step) const {
+  if (!(settings_.max_correction_ratio > 0.0))
+    return true;
+  // Along a followed path a step dissipates what its work supplies, plus a little stored
+  // energy (friction slipping as a brace unloads); a step that dissipates more than its
+  // positive work plus half its magnitude has released stored energy into dissipation: a
+  // snap the step size hid (measured: the Girona D3 step of dy / 10 that crushed the bearing
+  // mortar while unloading dissipated 15,000 N mm against a work of -7,200 N mm).
+  const double dissipated = step.end.dissipated - energy_.dissipated;
+  // Floor: 1e-3 of the gross work. Backstress recovery (Chaboche's dynamic recovery) turns
+  // stored energy into dissipation in small steps (measured: 100 N mm against a work of 60 N
+  // mm in the `passes` check, 3e-5 of its gross work); a crush releases far more.
+  const double floor = 1e-3 * (energy_.gross_work + std::abs(step.work)) + 1e-9;
+  return dissipated <= std::max(step.work, 0.0) + 0.5 * std::abs(step.work) + floor;
+}
+
 bool StaticAnalysis::pass_limit_point(double to, StepReport& report) {
   // Pseudo-transient continuation. The static path has no neighbour here (a limit point:
   // the restrained core jumping to a higher buckling mode, a snap-through); follow the
@@ -583,6 +640,48 @@ double StaticAnalysis::displacement(int node, model::Dof dof) const {
   return element::vector_from_rotation(committed_[node].rotation)[dof - model::rx];
 }
 
+Eigen::SparseMatrix<double> StaticAnalysis::nodal_stiffness_metric() const {
+  const auto size = static_cast<Eigen::Index>(free_dofs_.size());
+  // Free equations of each node's translations (kind 0) and rotations (kind 1).
+  std::vector<std::vector<int>> blocks(2 * static_cast<std::size_t>(model_.node_count()));
+  for (std::size_t e = 0; e < free_dofs_.size(); ++e) {
+    const int dof = free_dofs_[e];
+    blocks[static_cast<std::size_t>(2 * (dof / kDofPerNode) + (dof % kDofPerNode < 3 ? 0 : 1))]
+        .push_back(static_cast<int>(e));
+  }
+  const double mean_stiffness = size > 0 ? tangent_.diagonal().cwiseAbs().mean() : 0.0;
+  const double floor = 1e-9 * mean_stiffness; // a DOF without stiffness still damps
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const std::vector<int>& block = blocks[k];
+    if (block.size() < 3) {
+      // Some of the node's DOF of this kind are restrained: their diagonal entries.
+      for (const int e : block)
+        entries.emplace_back(e, e, std::max(std::abs(tangent_.coeff(e, e)), floor));
+      continue;
+    }
+    // The diagonal of the block in the node's own axes R (Model::node_axes), turned back:
+    // R diag(|r_i^T K r_i|) R^T.
+    const Matrix3& axes = model_.node_axes(static_cast<int>(k / 2));
+    Matrix3 stiffness;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j)
+        stiffness(i, j) = tangent_.coeff(block[i], block[j]);
+    }
+    Vector3 local;
+    for (int i = 0; i < 3; ++i)
+      local[i] = std::max(std::abs(axes.col(i).dot(stiffness * axes.col(i))), floor);
+    const Matrix3 metric = axes * local.asDiagonal() * axes.transpose();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j)
+        entries.emplace_back(block[i], block[j], metric(i, j));
+    }
+  }
+  Eigen::SparseMatrix<double> metric(size, size);
+  metric.setFromTriplets(entries.begin(), entries.end());
+  return metric;
+}
+
 StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   Attempt total;
   if (!assemble(true, total.failure))
@@ -592,20 +691,43 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   const element::ElementEnergy before = element_energy();
   const double control_force_before = internal_force_.dot(control_rate_);
   Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
-  const double stiffness = tangent_.rows() > 0 ? tangent_.diagonal().cwiseAbs().mean() : 0.0;
-  double viscosity = 1e-3 * stiffness;
+  // Backward-Euler steps of the gradient flow C du/dtau = F_ext - F_int(u), with the
+  // viscosity C = c D: D is the diagonal of K_0 (the tangent at the start of the jump), taken
+  // in each node's own axes (Model::node_axes: a brace's axis and section axes) and turned
+  // back, per node for its translations and for its rotations. Each DOF gets the same
+  // relative viscosity whatever its units and stiffness, and D turns with the model, so a
+  // turned brace takes the same path. (The absolute value of the whole 3 x 3 block mixes the
+  // axial stiffness into the lateral DOF of a bowed core: measured, it made the brbf3 path
+  // hang on the step again.)
+  // The first rule, C = c times the mean diagonal entry, is for the translations of a brace
+  // thousands of times stiffer than for its rotations (whose entries are EI/L, in N mm):
+  // the flow was resolved for some DOF and not for others, and the branch it came to rest on
+  // hung on round-off. Measured on the brbf3 story-2 brace (16 core elements, one cycle at
+  // Delta_by): moving the step points by 1e-9 mm, or the step from 0.3 to 0.41 mm, changed
+  // the compression peak from -455 kN (a bow of 4 mm) to -415 kN after a jump that released
+  // 1.2e6 N mm. With this D (and the far-branch control), steps of 0.15, 0.3, 0.41 and
+  // 0.6155 mm to 6.2 mm, and of Delta_by / 10 to Delta_by, give -423.6 kN (-419.6 kN at the
+  // smaller amplitude) and a 24.4 mm bow, the path the first rule also takes at the finest
+  // steps; the same cycle with its points moved by 1e-9 mm still buckles globally (open).
+  // c starts at 1e-3 and halves after each converged step (the flow speeds up as it
+  // settles), down to 1e-12.
+  const Eigen::SparseMatrix<double> metric = nodal_stiffness_metric();
+  double relative_viscosity = 1e-3;
   for (int pseudo_step = 0; pseudo_step < settings_.fallback_iterations; ++pseudo_step) {
     const std::vector<NodeConfiguration> start = trial_;
-    const Attempt attempt = newton(control, viscosity, settings_.max_iterations);
+    const Eigen::SparseMatrix<double> viscosity = relative_viscosity * metric;
+    const Attempt attempt = newton(control, &viscosity, settings_.max_iterations);
     total.iterations += attempt.iterations;
     if (!attempt.converged) {
-      trial_ = start; // a more viscous (shorter) pseudo-time step from the same state
-      viscosity *= 10.0;
+      // a more viscous (shorter) pseudo-time step from the same state
+      trial_ = start;
+      relative_viscosity *= 10.0;
       continue;
     }
     travelled += moved_;
     // at rest when the plain residual is below tolerance (the state is assembled)
-    if (residual_converged(free_residual(control), control)) {
+    const Eigen::VectorXd rest_residual = free_residual(control);
+    if (residual_converged(rest_residual, control)) {
       total.converged = true;
       const element::ElementEnergy after = element_energy();
       double load_work = 0.0;
@@ -625,7 +747,7 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
       total.jump_work = control_work + load_work;
       return total;
     }
-    viscosity = std::max(0.5 * viscosity, 1e-12 * stiffness);
+    relative_viscosity = std::max(0.5 * relative_viscosity, 1e-12);
   }
   total.failure = "pseudo-transient continuation did not come to rest in " +
                   std::to_string(settings_.fallback_iterations) + " pseudo-time steps";

@@ -49,6 +49,7 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
                            {"regularised_steps", result.regularised_steps},
                            {"unstable_accepted", result.unstable_accepted},
                            {"energy_cuts", result.energy_cuts},
+                           {"far_branch_cuts", result.far_branch_cuts},
                            {"energy_tolerance_missed", result.energy_tolerance_missed}};
   summary["energy_balance"] = Json{
       {"external_work", balance.external_work}, {"stored", balance.stored},

@@ -113,7 +113,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   std::vector<double> station_x;
   for (const int core : result.core_nodes) {
     station_x.push_back(axis.dot(model.coordinates(core) - brace.origin));
-    result.nodes.push_back(model.add_node(brace.origin + station_x.back() * axis));
+    result.nodes.push_back(model.add_node(brace.origin + station_x.back() * axis, brace.axes));
   }
 
   // casing beams: tube steel + mortar fill fibers, characteristic length w_k L per point
@@ -253,8 +253,9 @@ BraceHandles place(Model& model, const BraceSpec& spec,
       point.y() = offsets[index].first;
       point.z() = offsets[index].second;
     }
-    brace.nodes.push_back(existing ? *existing
-                                   : model.add_node(placement.origin + placement.axes * point));
+    brace.nodes.push_back(
+        existing ? *existing
+                 : model.add_node(placement.origin + placement.axes * point, placement.axes));
   };
   std::vector<bool> inside_casing;                  // per element
   std::vector<const SectionSpec*> element_sections; // per element

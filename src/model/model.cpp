@@ -6,8 +6,9 @@
 
 namespace brb::model {
 
-int Model::add_node(const Vector3& coordinates) {
+int Model::add_node(const Vector3& coordinates, const Matrix3& axes) {
   coordinates_.push_back(coordinates);
+  axes_.push_back(axes);
   fixed_.push_back({false, false, false, false, false, false});
   masses_.push_back({0.0, 0.0, 0.0, 0.0, 0.0, 0.0});
   return node_count() - 1;

@@ -301,7 +301,8 @@ TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
   const json& solver = summary.at("solver");
   EXPECT_EQ(keys_of(solver),
             (std::set<std::string>{"steps", "iterations", "substeps", "regularised_steps",
-                                   "unstable_accepted", "energy_cuts", "energy_tolerance_missed"}));
+                                   "unstable_accepted", "energy_cuts", "energy_tolerance_missed",
+                                   "far_branch_cuts"}));
   EXPECT_EQ(solver.at("steps"), rows.size() - 1);
   EXPECT_GE(solver.at("substeps").get<int>(), solver.at("steps").get<int>());
   // (A straight uniform bar is in equilibrium after the predictor: no iteration is needed.)

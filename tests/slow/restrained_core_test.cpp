@@ -26,14 +26,15 @@ struct RestrainedRun {
   double seconds = 0.0;
 };
 
-/// Runs full cycles at the given multiples of dy, steps of dy / 10.
-RestrainedRun run_cycles(const model::BraceSpec& spec, const std::vector<double>& multiples_of_dy) {
+/// Runs full cycles at the given multiples of dy, steps of dy / `steps_per_dy`.
+RestrainedRun run_cycles(const model::BraceSpec& spec, const std::vector<double>& multiples_of_dy,
+                         double steps_per_dy = 10.0) {
   RestrainedRun run{model::build_brace_model(spec), {}, {}, 0.0};
   const double dy = run.brace.yield_deformation;
   std::vector<io::CycleGroup> groups;
   for (const double multiple : multiples_of_dy)
     groups.push_back({multiple * dy, 1});
-  run.protocol = io::cyclic_protocol(spec.name, groups, dy / 10.0);
+  run.protocol = io::cyclic_protocol(spec.name, groups, dy / steps_per_dy);
   const auto start = std::chrono::steady_clock::now();
   run.result = run_cyclic_test(run.brace, run.protocol.deformation, run.protocol.cycle,
                                run.protocol.cycle_amplitude);
@@ -81,10 +82,9 @@ TEST(RestrainedCore, CasingLetsTheCoreCarryCompressionUpToYield) {
   EXPECT_GT(-run.result.max_compression, 0.8 * run.brace.yield_force);
   EXPECT_GT(run.result.max_tension, run.brace.yield_force);
   // and the casing holds: no global buckling, no crushed-through mortar.
-  // (Known fragility, issue 4 note: the path through the mode jumps depends on round-off. A
-  // one-ulp change of the friction penalty sent this run down a path where a jump crushed
-  // the bearing mortar through (assumed G_f = 0.1 N/mm), with an energy misfit of 1.7e-2
-  // against 6e-4 here.)
+  // (The path once depended on round-off: a one-ulp change of the friction penalty sent this
+  // run down a path where a jump crushed the bearing mortar through. The test below holds
+  // the path to the step size.)
   EXPECT_FALSE(run.result.indicators.global_buckling);
   EXPECT_FALSE(run.result.indicators.casing_failure);
 
@@ -132,6 +132,26 @@ TEST(RestrainedCore, WithoutFrictionCompressionEqualsTensionAndFrictionRaisesIt)
   std::cout << "[ restrained ] Pmax/Tmax bowed core: kappa 0 " << without << ", kappa 0.1 " << with
             << "\n";
   EXPECT_GT(with, without);
+}
+
+TEST(RestrainedCore, PathThroughTheModeJumpsDoesNotHangOnTheStepSize) {
+  // Reference: the static path is a property of the brace and the history, not of the step
+  // size. Before the far-branch control and the diagonal viscosity of the pseudo-transient
+  // continuation (NewtonSettings::max_correction_ratio, StaticAnalysis::pseudo_transient),
+  // steps of dy / 7 and dy / 10 crushed the bearing mortar through while unloading from 2 dy
+  // and dy / 13 did not, and the compression peaks spread over 0.15 %. Same cycles as
+  // CasingLetsTheCoreCarryCompressionUpToYield at three step sizes: no run crushes the
+  // mortar or buckles, and the peaks agree within 0.05 % (measured: all -114,245 N).
+  std::vector<double> peaks;
+  for (const double steps_per_dy : {7.0, 10.0, 13.0}) {
+    const RestrainedRun run = run_cycles(girona_d3_restrained(), {0.5, 2.0}, steps_per_dy);
+    ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
+    EXPECT_FALSE(run.result.indicators.casing_failure) << "dy / " << steps_per_dy;
+    EXPECT_FALSE(run.result.indicators.global_buckling) << "dy / " << steps_per_dy;
+    peaks.push_back(run.result.max_compression);
+  }
+  for (const double peak : peaks)
+    EXPECT_NEAR(peak / peaks.front(), 1.0, 5e-4);
 }
 
 TEST(RestrainedCore, EnergyBalanceHolds) {

@@ -57,6 +57,7 @@ struct CyclicTestResult {
   int regularised_steps = 0;
   int unstable_accepted = 0;       ///< substeps accepted although their equilibrium was unstable
   int energy_cuts = 0;             ///< substeps cut by the energy-error control
+  int far_branch_cuts = 0;         ///< substeps cut by the far-branch control (NewtonSettings)
   int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
   BraceIndicators indicators;
   std::vector<ElementHistoryPoint> history; ///< one per step, when asked for

@@ -14,6 +14,7 @@
 
 namespace brb::model {
 
+using element::Matrix3;
 using element::Vector3;
 
 inline constexpr int kDofPerNode = 6;
@@ -42,8 +43,12 @@ struct RigidDiaphragmConstraint {
 
 class Model {
 public:
-  /// Adds a node at `coordinates` (mm); returns its index.
-  int add_node(const Vector3& coordinates);
+  /// Adds a node at `coordinates` (mm); returns its index. `axes` (columns) are the node's
+  /// own directions, e.g. a brace's axis and section axes: solvers that weigh DOF by
+  /// direction (the pseudo-transient viscosity of StaticAnalysis) use them, so that a turned
+  /// model behaves as the unturned one. Default: the global axes.
+  int add_node(const Vector3& coordinates, const Matrix3& axes = Matrix3::Identity());
+  const Matrix3& node_axes(int node) const { return axes_.at(node); }
 
   /// Restrains one DOF of a node (displacement zero for ever).
   void fix(int node, Dof dof);
@@ -89,6 +94,7 @@ private:
   void check_node(int node, const std::string& what) const;
 
   std::vector<Vector3> coordinates_;
+  std::vector<Matrix3> axes_;
   std::vector<std::array<bool, kDofPerNode>> fixed_;
   std::vector<NodalMass> masses_;
   std::vector<EqualDofConstraint> equal_dofs_;
