@@ -459,11 +459,19 @@ void StaticAnalysis::revert() {
     element->revert_to_committed();
 }
 
+bool StaticAnalysis::halve(double from, double to, int depth, StepReport& report) {
+  revert();
+  const double middle = 0.5 * (from + to);
+  return try_increment(from, middle, depth + 1, report) &&
+         try_increment(middle, to, depth + 1, report);
+}
+
 bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport& report) {
   report.deepest_halving = std::max(report.deepest_halving, depth);
   // Tangent predictor from the converged state.
   revert();
   Attempt attempt;
+  bool landed_far = false;
   if (assemble(true, attempt.failure)) {
     Eigen::VectorXd load;
     if (kinematic_control()) {
@@ -489,19 +497,17 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
     const std::vector<NodeConfiguration> predicted = trial_;
     attempt = newton(to, nullptr, settings_.max_iterations);
-    if (attempt.converged && !lands_near_predictor(predicted) && depth < settings_.max_halvings) {
-      // Newton converged far from where the tangent predicted: onto another branch (see
-      // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
-      ++report.far_branch_cuts;
-      ++far_branch_cuts_;
-      revert();
-      const double middle = 0.5 * (from + to);
-      return try_increment(from, middle, depth + 1, report) &&
-             try_increment(middle, to, depth + 1, report);
-    }
+    landed_far = attempt.converged && !lands_near_predictor(predicted);
   }
   report.iterations += attempt.iterations;
   const bool at_floor = depth >= settings_.max_halvings;
+  if (landed_far && !at_floor) {
+    // Newton converged far from where the tangent predicted: onto another branch (see
+    // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
+    ++report.far_branch_cuts;
+    ++far_branch_cuts_;
+    return halve(from, to, depth, report);
+  }
   bool stable = true;
   if (attempt.converged && settings_.require_stable_equilibrium) {
     stable = tangent_is_positive_definite();
@@ -511,15 +517,12 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
   }
   const StepEnergy step = attempt.converged ? trial_step_energy() : StepEnergy{};
-  if (attempt.converged && !dissipation_supplied_by_work(step) && depth < settings_.max_halvings) {
+  if (attempt.converged && !at_floor && !dissipation_supplied_by_work(step)) {
     // The step dissipated stored energy the loading did not supply: it landed on another
     // branch (NewtonSettings::max_correction_ratio). Cut it so the path is followed.
     ++report.far_branch_cuts;
     ++far_branch_cuts_;
-    revert();
-    const double middle = 0.5 * (from + to);
-    return try_increment(from, middle, depth + 1, report) &&
-           try_increment(middle, to, depth + 1, report);
+    return halve(from, to, depth, report);
   }
   if (attempt.converged && !within_energy_tolerance(step)) {
     if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
@@ -527,10 +530,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       // the energies agree (NewtonSettings::energy_tolerance).
       ++report.energy_cuts;
       ++energy_cuts_;
-      revert();
-      const double middle = 0.5 * (from + to);
-      return try_increment(from, middle, depth + 1, report) &&
-             try_increment(middle, to, depth + 1, report);
+      return halve(from, to, depth, report);
     }
     ++report.energy_tolerance_missed;
     ++energy_tolerance_missed_;
@@ -554,11 +554,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   if (!at_floor && depth >= settings_.pseudo_transient_depth && pass_limit_point(to, report)) {
     return true;
   }
-  if (!at_floor) {
-    const double middle = 0.5 * (from + to);
-    return try_increment(from, middle, depth + 1, report) &&
-           try_increment(middle, to, depth + 1, report);
-  }
+  if (!at_floor)
+    return halve(from, to, depth, report);
   if (pass_limit_point(to, report))
     return true;
   revert();

@@ -222,6 +222,8 @@ private:
   /// Sum of the elements' energies at their last evaluated (trial) state.
   element::ElementEnergy element_energy() const;
   bool try_increment(double from, double to, int depth, StepReport& report);
+  /// Reverts the trial state and tries the step as two halves, one cut deeper.
+  bool halve(double from, double to, int depth, StepReport& report);
   /// Trapezoidal work of the converged forces over the trial increment (N mm).
   double increment_work() const;
   /// A converged trial step's work and the elements' energies at its end: computed once,
