@@ -28,13 +28,13 @@ double smooth_ramp(double time, double duration) {
 }
 
 double SolidExplicitEnergy::relative_error() const {
-  const double stored = kinetic + internal + hourglass;
+  const double stored = accounted();
   return std::abs(external - stored) / std::max({std::abs(external), std::abs(stored), 1e-30});
 }
 
-template <class Law>
-SolidExplicit<Law>::SolidExplicit(SolidModel<Law>& model, SolidLoading loading,
-                                  SolidExplicitSettings settings)
+template <class Model>
+SolidExplicitSolver<Model>::SolidExplicitSolver(Model& model, SolidLoading loading,
+                                                SolidExplicitSettings settings)
     : model_(model), loading_(std::move(loading)) {
   const int n = model_.dof_count();
   std::vector<bool> prescribed(n, false);
@@ -62,21 +62,21 @@ SolidExplicit<Law>::SolidExplicit(SolidModel<Law>& model, SolidLoading loading,
   set_initial_state(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n));
 }
 
-template <class Law>
-void SolidExplicit<Law>::fill_prescribed(double t, Eigen::VectorXd& full) const {
+template <class Model>
+void SolidExplicitSolver<Model>::fill_prescribed(double t, Eigen::VectorXd& full) const {
   const double factor = loading_.history(t);
   for (std::size_t i = 0; i < loading_.prescribed.dofs.size(); ++i)
     full[loading_.prescribed.dofs[i]] = factor * loading_.prescribed.values[i];
 }
 
-template <class Law>
-void SolidExplicit<Law>::set_initial_state(const Eigen::VectorXd& displacement,
-                                           const Eigen::VectorXd& velocity) {
+template <class Model>
+void SolidExplicitSolver<Model>::set_initial_state(const Eigen::VectorXd& displacement,
+                                                   const Eigen::VectorXd& velocity) {
   displacement_ = displacement;
   velocity_ = velocity;
   fill_prescribed(time_, displacement_);
   std::string reason;
-  if (!model_.evaluate(displacement_, force_, nullptr, reason))
+  if (!model_.evaluate(displacement_, force_, reason))
     throw std::invalid_argument("solid explicit: the initial state cannot be evaluated: " + reason);
   model_.commit();
   acceleration_.resize(mass_.size());
@@ -89,13 +89,12 @@ void SolidExplicit<Law>::set_initial_state(const Eigen::VectorXd& displacement,
   energy_ = {};
   for (std::size_t i = 0; i < free_dofs_.size(); ++i)
     energy_.kinetic += 0.5 * mass_[i] * velocity_[free_dofs_[i]] * velocity_[free_dofs_[i]];
-  energy_.internal = model_.energy().internal;
-  energy_.hourglass = model_.energy().hourglass;
+  take_model_energies();
   // the work that brought the model to its initial state
-  energy_.external = energy_.kinetic + energy_.internal + energy_.hourglass;
+  energy_.external = energy_.accounted();
 }
 
-template <class Law> bool SolidExplicit<Law>::advance(double dt, std::string& failure) {
+template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::string& failure) {
   const Eigen::Index m = mass_.size();
   Eigen::VectorXd q(m), v(m);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -117,7 +116,7 @@ template <class Law> bool SolidExplicit<Law>::advance(double dt, std::string& fa
       a.setZero();
       return;
     }
-    evaluated = model_.evaluate(full, force, nullptr, failure);
+    evaluated = model_.evaluate(full, force, failure);
     if (!evaluated) {
       a.setZero();
       return;
@@ -150,8 +149,7 @@ template <class Law> bool SolidExplicit<Law>::advance(double dt, std::string& fa
   }
   model_.commit();
   energy_.external += work;
-  energy_.internal = model_.energy().internal;
-  energy_.hourglass = model_.energy().hourglass;
+  take_model_energies();
   energy_.kinetic = 0.5 * v_new.dot(mass_.cwiseProduct(v_new));
   displacement_ = full;
   for (Eigen::Index i = 0; i < m; ++i)
@@ -166,7 +164,7 @@ template <class Law> bool SolidExplicit<Law>::advance(double dt, std::string& fa
   return true;
 }
 
-template <class Law> bool SolidExplicit<Law>::run_to(double time, std::string& failure) {
+template <class Model> bool SolidExplicitSolver<Model>::run_to(double time, std::string& failure) {
   while (time - time_ > 1e-9 * time_step_) {
     if (!advance(std::min(time_step_, time - time_), failure))
       return false;
@@ -174,8 +172,17 @@ template <class Law> bool SolidExplicit<Law>::run_to(double time, std::string& f
   return true;
 }
 
-template class SolidExplicit<material::IsotropicElastic3D>;
-template class SolidExplicit<material::SteelDamagePlasticity3D>;
-template class SolidExplicit<material::MortarDamage3D>;
+template <class Model> void SolidExplicitSolver<Model>::take_model_energies() {
+  const SolidEnergy model = model_.energy();
+  energy_.internal = model.internal;
+  energy_.hourglass = model.hourglass;
+  energy_.interaction = model.interaction;
+  energy_.friction = model.friction;
+}
+
+template class SolidExplicitSolver<SolidModel<material::IsotropicElastic3D>>;
+template class SolidExplicitSolver<SolidModel<material::SteelDamagePlasticity3D>>;
+template class SolidExplicitSolver<SolidModel<material::MortarDamage3D>>;
+template class SolidExplicitSolver<SolidBody>;
 
 } // namespace brb::solid

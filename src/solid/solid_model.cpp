@@ -212,6 +212,14 @@ template <class Law> double SolidModel<Law>::stable_time_step(double safety) con
   return safety * step;
 }
 
+template <class Law> double SolidModel<Law>::max_frequency() const {
+  double frequency = 0.0;
+  for (std::size_t e = 0; e < references_.size(); ++e)
+    frequency =
+        std::max(frequency, hex8_max_frequency(references_[e], dilatational_modulus_[e], density_));
+  return frequency;
+}
+
 template class SolidModel<material::IsotropicElastic3D>;
 template class SolidModel<material::SteelDamagePlasticity3D>;
 template class SolidModel<material::MortarDamage3D>;

@@ -1,20 +1,28 @@
-// Explicit central differences for a SolidModel: lumped (row-sum) mass, Boost.Odeint's
-// velocity Verlet (the central-difference method in velocity form, as in
+// Explicit central differences for a SolidModel or a SolidBody: lumped (row-sum) mass,
+// Boost.Odeint's velocity Verlet (the central-difference method in velocity form, as in
 // analysis::ExplicitAnalysis; Belytschko, Liu, Moran, Box 6.1), on the free DOFs, with
 // prescribed displacements that follow a history in time (smooth_ramp for quasi-static
 // loading) and external nodal forces that follow another.
 //
-// Stable step: safety x min over elements of 2 / w_max, w_max from the Flanagan-Belytschko
-// element bound (hex8.hpp); the assembled mesh's highest frequency is not above the largest
-// element one (Irons' element eigenvalue theorem), so the bound holds for the mesh.
+// Stable step: the model's stable_time_step(safety): safety x min over elements of 2 / w_max,
+// w_max from the Flanagan-Belytschko element bound (hex8.hpp); the assembled mesh's highest
+// frequency is not above the largest element one (Irons' element eigenvalue theorem), so the
+// bound holds for the mesh. A SolidBody adds its interactions' springs (solid_body.hpp).
 //
 // Energy, per step: kinetic 1/2 v^T M v (free DOFs), internal work of the centre stresses
-// (SolidModel, trapezoidal in the strain) and stored hourglass energy; external work
-// trapezoidal in the displacements: the reactions (internal forces) of the prescribed DOFs
+// (trapezoidal in the strain), stored hourglass energy, and for a SolidBody the energy stored
+// in its interactions' springs and dissipated by their friction; external work trapezoidal in
+// the displacements: the reactions (internal plus interaction forces) of the prescribed DOFs
 // times their increments plus the external forces times the free DOFs' increments. The
-// balance W_ext = KE + IE + HG holds up to the central-difference error O(dt^2).
+// balance W_ext = KE + IE + HG + interaction + friction holds up to the central-difference
+// error O(dt^2).
+//
+// The solver is a template on the model (SolidExplicitSolver<Model>, Model = SolidModel<Law>
+// or SolidBody, instantiated for both); SolidExplicit<T> names it for a law (SolidModel<T>),
+// a SolidModel<Law> or a SolidBody.
 #pragma once
 
+#include "brb/solid/solid_body.hpp"
 #include "brb/solid/solid_model.hpp"
 #include "brb/solid/solid_static.hpp"
 
@@ -46,18 +54,22 @@ struct SolidLoading {
 
 struct SolidExplicitEnergy {
   double kinetic = 0.0;
-  double internal = 0.0;  ///< work of the centre stresses
-  double hourglass = 0.0; ///< stored hourglass energy
-  double external = 0.0;  ///< work of the reactions and external forces
-  /// |W_ext - KE - IE - HG| / max(W_ext, KE + IE + HG, 1e-30)
+  double internal = 0.0;    ///< work of the centre stresses
+  double hourglass = 0.0;   ///< stored hourglass energy
+  double interaction = 0.0; ///< energy stored in the interactions' springs (SolidBody)
+  double friction = 0.0;    ///< energy dissipated by the interactions' friction (SolidBody)
+  double external = 0.0;    ///< work of the reactions and external forces
+  /// The energy the model holds or has dissipated: KE + IE + HG + interaction + friction.
+  double accounted() const { return kinetic + internal + hourglass + interaction + friction; }
+  /// |W_ext - accounted| / max(W_ext, accounted, 1e-30)
   double relative_error() const;
 };
 
-template <class Law> class SolidExplicit {
+template <class Model> class SolidExplicitSolver {
 public:
   /// Starts at rest from the model's committed state (zero displacement). Throws
   /// std::invalid_argument for a time step above the stable one.
-  SolidExplicit(SolidModel<Law>& model, SolidLoading loading, SolidExplicitSettings settings = {});
+  SolidExplicitSolver(Model& model, SolidLoading loading, SolidExplicitSettings settings = {});
 
   /// Starts from displacement u0 and velocity v0 (full DOF vectors; the prescribed DOFs take
   /// their history's values). The energies start from the state's stored energy as work done.
@@ -79,9 +91,10 @@ public:
 
 private:
   bool advance(double dt, std::string& failure);
+  void take_model_energies();
   void fill_prescribed(double t, Eigen::VectorXd& full) const;
 
-  SolidModel<Law>& model_;
+  Model& model_;
   SolidLoading loading_;
   std::vector<int> free_dofs_;
   Eigen::VectorXd mass_; // free DOFs
@@ -93,5 +106,17 @@ private:
   Eigen::VectorXd acceleration_;                    // free DOFs
   SolidExplicitEnergy energy_;
 };
+
+namespace detail {
+/// The model a SolidExplicit<T> integrates: SolidModel<T> for a law T, else T itself.
+template <class T> struct ExplicitModelOf { using type = SolidModel<T>; };
+template <class Law> struct ExplicitModelOf<SolidModel<Law>> { using type = SolidModel<Law>; };
+template <> struct ExplicitModelOf<SolidBody> { using type = SolidBody; };
+} // namespace detail
+
+/// SolidExplicit<Law> (a SolidModel<Law>), SolidExplicit<SolidModel<Law>>,
+/// SolidExplicit<SolidBody>.
+template <class T>
+using SolidExplicit = SolidExplicitSolver<typename detail::ExplicitModelOf<T>::type>;
 
 } // namespace brb::solid

@@ -31,6 +31,10 @@ namespace brb::solid {
 struct SolidEnergy {
   double internal = 0.0; ///< work of the centre-point stresses, int S : dE dV (stored + dissipated)
   double hourglass = 0.0; ///< stored hourglass energy (conservative stiffness form)
+  /// Energy stored in the springs of non-element interactions (SolidBody; 0 for one model).
+  double interaction = 0.0;
+  /// Energy dissipated by friction in those interactions (SolidBody; 0 for one model).
+  double friction = 0.0;
 };
 
 template <class Law> class SolidModel {
@@ -54,6 +58,10 @@ public:
   /// element inverts (det F <= 0) or a stress is not finite.
   bool evaluate(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
                 Eigen::SparseMatrix<double>* tangent, std::string& reason);
+  /// The internal forces only (what the explicit solver needs; the same call as SolidBody's).
+  bool evaluate(const Eigen::VectorXd& displacement, Eigen::VectorXd& force, std::string& reason) {
+    return evaluate(displacement, force, nullptr, reason);
+  }
   /// Accepts the last evaluate(): states, strains, stresses and the internal work.
   void commit();
 
@@ -77,6 +85,10 @@ public:
   double density() const { return density_; }
   /// Stable central-difference step: safety x min over elements of 2 / w_max (hex8.hpp).
   double stable_time_step(double safety) const;
+  /// The largest element bound w_max (rad/s) of hex8_max_frequency over the elements, with
+  /// each element's own lumped mass rho V / 8 per node (what Irons' element eigenvalue theorem
+  /// needs: the assembled mass is the sum of these shares, also where parts share a node).
+  double max_frequency() const;
 
 private:
   /// The element's trial response into its own slots; false when it inverts or its stress is
