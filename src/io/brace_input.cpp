@@ -3,6 +3,7 @@
 #include "brb/io/json_input.hpp"
 #include "brb/io/material_input.hpp"
 #include "brb/material/parameter_error.hpp"
+#include "brb/solid/brace_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -380,13 +381,64 @@ model::ElementSpec read_element(const JsonValue& object) {
   return element;
 }
 
+/// The "solid" block: the 3D continuum mesh (solid/brace_mesh.hpp).
+model::SolidMeshSpec read_solid(const JsonValue& object) {
+  object.expect_object({"elements_across_core", "axial_element_size", "elements_through_mortar",
+                        "half_length", "tube", "steel_density", "mortar_density", "mass_scaling",
+                        "threads"},
+                       "a solid object {elements_across_core, axial_element_size, "
+                       "elements_through_mortar, half_length, tube, steel_density, "
+                       "mortar_density, mass_scaling, threads}");
+  model::SolidMeshSpec solid;
+  const auto count = [&](std::string_view key, std::string_view meaning, int& value) {
+    if (const auto found = object.find(key))
+      value = positive_count(*found, meaning);
+  };
+  count("elements_across_core", "number of elements across the core's smaller side",
+        solid.elements_across_core);
+  count("elements_through_mortar", "number of elements through the mortar's thickness",
+        solid.elements_through_mortar);
+  count("threads", "number of threads", solid.threads);
+  if (const auto size = object.find("axial_element_size"))
+    solid.axial_element_size =
+        positive_length(object, "axial_element_size", "target element length along the brace axis");
+  if (const auto half = object.find("half_length")) {
+    if (!half->json().is_boolean())
+      throw half->error("half_length must be true or false (got " +
+                        describe_json_value(half->json()) + ")");
+    solid.half_length = half->json().get<bool>();
+  }
+  if (const auto tube = object.find("tube")) {
+    solid.tube = one_of<model::SolidTube>(
+        *tube, "tube model",
+        {{"elements", model::SolidTube::elements}, {"homogenised", model::SolidTube::homogenised}});
+  }
+  for (const auto& [key, value] : {std::pair{"steel_density", &solid.steel_density},
+                                   std::pair{"mortar_density", &solid.mortar_density}}) {
+    if (const auto found = object.find(key)) {
+      *value = found->number("density, tonne/mm^3");
+      if (!(*value > 0.0))
+        throw found->error("the density must be > 0 tonne/mm^3 (steel 7.85e-9, mortar 2.35e-9; "
+                           "got " +
+                           describe_json_value(found->json()) + ")");
+    }
+  }
+  if (const auto scaling = object.find("mass_scaling")) {
+    solid.mass_scaling = scaling->number("mass scaling factor on the densities");
+    if (!(solid.mass_scaling >= 1.0))
+      throw scaling->error("the mass scaling factor must be >= 1 (got " +
+                           describe_json_value(scaling->json()) + ")");
+  }
+  return solid;
+}
+
 } // namespace
 
 model::BraceSpec parse_brace(std::string_view json_text, const std::string& source) {
   const nlohmann::json document = parse_json(json_text, source);
   const JsonValue root(document, source);
   root.expect_object({"name", "units", "core", "transition", "connection", "ends", "imperfection",
-                      "casing", "element"},
+                      "casing", "element", "solid"},
                      "a brace object");
   model::BraceSpec spec;
   if (const auto name = root.find("name"))
@@ -475,6 +527,24 @@ model::BraceSpec parse_brace(std::string_view json_text, const std::string& sour
   }
   if (const auto element = root.find("element")) {
     spec.element = read_element(*element);
+  }
+  if (const auto solid = root.find("solid"); solid && !solid->json().is_null()) {
+    spec.solid = read_solid(*solid);
+    // the mesh itself: too coarse, a gap or a bow that leaves no mortar, elongated elements
+    try {
+      solid::validate_brace_mesh(spec, *spec.solid);
+    } catch (const ParameterError& error) {
+      std::string path;
+      std::string_view field = error.field();
+      while (!field.empty()) {
+        const std::size_t slash = field.find('/');
+        path = json_pointer_append(path, field.substr(0, slash));
+        field = slash == std::string_view::npos ? std::string_view{} : field.substr(slash + 1);
+      }
+      throw InputError(source, path, std::string("solid mesh: ") + error.what());
+    } catch (const std::invalid_argument& error) {
+      throw InputError(source, solid->path(), std::string("solid mesh: ") + error.what());
+    }
   }
   return spec;
 }

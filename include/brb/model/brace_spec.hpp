@@ -120,6 +120,26 @@ struct ElementSpec {
   ElementMode mode = ElementMode::condensed;
 };
 
+/// How the casing's steel tube enters the 3D continuum mesh (solid::mesh_brace): as its own
+/// steel elements, or homogenised into the mortar with n_E = E_s / E_c as the source did
+/// (BRB_SOURCE_FACTS section 7).
+enum class SolidTube { elements, homogenised };
+
+/// The `solid` block of a brace file: the 3D continuum mesh of the brace (issue 6;
+/// solid/brace_mesh.hpp states the geometry). Defaults as listed.
+struct SolidMeshSpec {
+  int elements_across_core = 2; ///< across the core's smaller side (>= 2)
+  double axial_element_size =
+      0.0; ///< target element length along the axis (mm); 0: 3 x the core's element size across
+  int elements_through_mortar = 2; ///< through the mortar's thickness (>= 2)
+  bool half_length = false;        ///< mid-length to the driven end, symmetry plane at mid-length
+  SolidTube tube = SolidTube::elements;
+  double steel_density = 7.85e-9;  ///< tonne/mm^3 (the source's 7850 kg/m^3)
+  double mortar_density = 2.35e-9; ///< tonne/mm^3 (the source's 2350 kg/m^3)
+  double mass_scaling = 1.0;       ///< factor on both densities (>= 1: a longer stable step)
+  int threads = 1;                 ///< threads of the element loops
+};
+
 struct BraceSpec {
   std::string name;
   SectionSpec core_section;
@@ -132,8 +152,9 @@ struct BraceSpec {
   std::optional<ZoneSpec> connection;
   EndCondition ends = EndCondition::pinned;
   ImperfectionSpec imperfection;
-  std::optional<CasingSpec> casing; ///< nullopt: bare core
-  ElementSpec element;              ///< fidelity and mode in frames (brace file: "element")
+  std::optional<CasingSpec> casing;   ///< nullopt: bare core
+  ElementSpec element;                ///< fidelity and mode in frames (brace file: "element")
+  std::optional<SolidMeshSpec> solid; ///< the 3D continuum mesh (brace file: "solid")
 
   /// Length between the outer nodes (work points), mm.
   double total_length() const;
