@@ -1,0 +1,172 @@
+// A cyclic run of the 3D continuum brace (see brace_run.hpp).
+#include "brb/solid/brace_run.hpp"
+
+#include "brb/material/mortar_damage.hpp"
+#include "brb/material/parameter_error.hpp"
+#include "brb/material/steel_damage_plasticity_3d.hpp"
+#include "brb/solid/axial_tie.hpp"
+#include "brb/solid/solid_body.hpp"
+#include "brb/solid/solid_explicit.hpp"
+
+#include <cmath>
+#include <numeric>
+
+namespace brb::solid {
+
+namespace {
+
+using Steel = material::SteelDamagePlasticity3D;
+using Mortar = material::MortarDamage3D;
+
+/// The piecewise protocol: segment i goes from targets[i] to targets[i + 1] over
+/// durations[i] with a 1 - cos ramp.
+struct Protocol {
+  std::vector<double> targets;   // d_0 = 0, d_1, ...
+  std::vector<double> starts;    // start time of each segment
+  std::vector<double> durations; // of each segment
+
+  double at(double t) const {
+    for (std::size_t i = 0; i < durations.size(); ++i)
+      if (t < starts[i] + durations[i])
+        return targets[i] +
+               (targets[i + 1] - targets[i]) * smooth_ramp(t - starts[i], durations[i]);
+    return targets.back();
+  }
+};
+
+} // namespace
+
+double core_first_axial_period(const model::BraceSpec& brace, const model::SolidMeshSpec& solid) {
+  const double length = brace.total_length(); // the whole core, also for a half model
+  const double density = solid.steel_density * solid.mass_scaling;
+  return 4.0 * length / std::sqrt(brace.steel.youngs_modulus / density);
+}
+
+SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
+                              const std::vector<double>& deformations,
+                              const SolidBraceRunSettings& settings,
+                              const ContactFactory& contact) {
+  if (deformations.empty())
+    throw std::invalid_argument("solid brace run: the protocol has no deformation");
+  for (double d : deformations)
+    if (!std::isfinite(d))
+      throw std::invalid_argument("solid brace run: a protocol deformation is not finite");
+  if (!(settings.time_per_deformation >= 0.0) || !(settings.duration >= 0.0) ||
+      settings.outputs_per_segment < 1 ||
+      !(settings.stable_step_safety > 0.0 && settings.stable_step_safety <= 1.0))
+    throw std::invalid_argument("solid brace run: time per deformation and duration must be >= 0, "
+                                "outputs per segment >= 1, the step safety in (0, 1]");
+  brace.steel.validate();
+  const model::SolidMeshSpec solid = brace.solid.value_or(model::SolidMeshSpec{});
+  const BraceMesh mesh = mesh_brace(brace, solid);
+
+  SolidBody body(mesh.nodes);
+  const double steel_density = solid.steel_density * solid.mass_scaling;
+  body.add_part(
+      "core",
+      SolidModel<Steel>(
+          mesh.core.mesh, [&](double lc) { return Steel(brace.steel, lc); }, steel_density),
+      mesh.core.global_nodes);
+  if (brace.casing) {
+    const model::CasingSpec& casing = *brace.casing;
+    casing.mortar.validate();
+    if (!mesh.mortar.empty())
+      body.add_part("mortar",
+                    SolidModel<Mortar>(
+                        mesh.mortar.mesh, [&](double lc) { return Mortar(casing.mortar, lc); },
+                        solid.mortar_density * solid.mass_scaling),
+                    mesh.mortar.global_nodes);
+    if (!mesh.tube.empty()) {
+      casing.tube_steel.validate();
+      body.add_part("tube",
+                    SolidModel<Steel>(
+                        mesh.tube.mesh, [&](double lc) { return Steel(casing.tube_steel, lc); },
+                        steel_density),
+                    mesh.tube.global_nodes);
+    }
+    if (!mesh.stopper_core.empty())
+      body.add_interaction(std::make_unique<AxialTie>(mesh.stopper_core, mesh.stopper_casing,
+                                                      mesh.stopper_stiffness));
+    if (contact && !mesh.core_faces.empty())
+      body.add_interaction(contact(mesh.core_faces, mesh.casing_faces, mesh.nodes));
+  }
+  body.set_threads(solid.threads);
+
+  // the protocol's timing
+  SolidBraceRun run;
+  run.first_axial_period = core_first_axial_period(brace, solid);
+  Protocol protocol;
+  protocol.targets.push_back(0.0);
+  protocol.targets.insert(protocol.targets.end(), deformations.begin(), deformations.end());
+  double path = 0.0;
+  for (std::size_t i = 1; i < protocol.targets.size(); ++i)
+    path += std::abs(protocol.targets[i] - protocol.targets[i - 1]);
+  if (!(path > 0.0))
+    throw std::invalid_argument("solid brace run: the protocol does not move");
+  const double yield_deformation =
+      brace.steel.yield_stress / brace.steel.youngs_modulus * brace.yielding_length;
+  run.time_per_deformation = settings.duration > 0.0 ? settings.duration / path
+                             : settings.time_per_deformation > 0.0
+                                 ? settings.time_per_deformation
+                                 : 20.0 * run.first_axial_period / yield_deformation;
+  double start = 0.0;
+  for (std::size_t i = 1; i < protocol.targets.size(); ++i) {
+    protocol.starts.push_back(start);
+    protocol.durations.push_back(run.time_per_deformation *
+                                 std::abs(protocol.targets[i] - protocol.targets[i - 1]));
+    start += protocol.durations.back();
+  }
+
+  // supports and the driven face (its displacement: the brace elongation, halved in a half model)
+  SolidLoading loading;
+  const double drive = mesh.half_length ? 0.5 : 1.0;
+  for (int node : mesh.loaded_end) {
+    loading.prescribed.add(node, 0, drive);
+    loading.prescribed.add(node, 1, 0.0);
+    loading.prescribed.add(node, 2, 0.0);
+  }
+  for (int node : mesh.fixed_end)
+    for (int direction = 0; direction < 3; ++direction)
+      loading.prescribed.add(node, direction, 0.0);
+  for (int node : mesh.symmetry_plane)
+    loading.prescribed.add(node, 0, 0.0);
+  loading.history = [protocol](double t) { return protocol.at(t); };
+
+  SolidExplicit<SolidBody> solver(body, loading, {settings.stable_step_safety, 0.0});
+  run.time_step = solver.time_step();
+  run.nodes = body.node_count();
+  run.elements = body.element_count();
+  const auto record = [&] {
+    SolidBraceRecord r;
+    r.time = solver.time();
+    r.deformation = solver.displacement()[3 * mesh.loaded_end.front()] / drive;
+    for (int node : mesh.loaded_end)
+      r.force += solver.internal_force()[3 * node];
+    const SolidExplicitEnergy& e = solver.energy();
+    r.kinetic = e.kinetic;
+    r.internal = e.internal;
+    r.hourglass = e.hourglass;
+    r.contact_stored = e.interaction;
+    r.friction = e.friction;
+    r.external = e.external;
+    r.energy_error = e.relative_error();
+    run.records.push_back(r);
+  };
+  record();
+  for (std::size_t i = 0; i < protocol.durations.size(); ++i) {
+    for (int k = 1; k <= settings.outputs_per_segment; ++k) {
+      const double t =
+          protocol.starts[i] + protocol.durations[i] * k / settings.outputs_per_segment;
+      if (!solver.run_to(t, run.failure)) {
+        run.steps = solver.steps();
+        return run;
+      }
+      record();
+    }
+  }
+  run.steps = solver.steps();
+  run.completed = true;
+  return run;
+}
+
+} // namespace brb::solid
