@@ -88,7 +88,9 @@ public:
         if (!prescribed_[static_cast<std::size_t>(d)]) {
           v_[d] += 0.5 * dt_ * a_[d];
           u_[d] += dt_ * v_[d];
+          damping_work_ += damping_ * mass_[d] * v_[d] * v_[d] * dt_;
         }
+      const Eigen::VectorXd previous_u = u_, previous_force = force_;
       for (const Prescription& p : prescriptions_)
         u_[p.dof] = p.value * p.history(time_);
       force_.setZero();
@@ -98,6 +100,9 @@ public:
         return false;
       model_.commit();
       contact_.commit();
+      for (const Prescription& p : prescriptions_) // trapezoidal work of the reactions
+        external_work_ +=
+            0.5 * (previous_force[p.dof] + force_[p.dof]) * (u_[p.dof] - previous_u[p.dof]);
       for (Eigen::Index d = 0; d < u_.size(); ++d)
         if (!prescribed_[static_cast<std::size_t>(d)]) {
           a_[d] = -force_[d] / mass_[d] - damping_ * v_[d];
@@ -114,6 +119,8 @@ public:
   const Eigen::VectorXd& force() const { return force_; }
   const Eigen::VectorXd& displacement() const { return u_; }
   double kinetic_energy() const { return 0.5 * v_.dot(mass_.cwiseProduct(v_)); }
+  double external_work() const { return external_work_; }
+  double damping_work() const { return damping_work_; }
 
 private:
   struct Prescription {
@@ -128,6 +135,7 @@ private:
   std::vector<bool> prescribed_;
   std::vector<Prescription> prescriptions_;
   double time_ = 0.0, dt_ = 0.0;
+  double external_work_ = 0.0, damping_work_ = 0.0;
   long steps_ = 0;
 };
 
@@ -193,7 +201,20 @@ TEST(ContactBlocks, ABlockPressedOnAnotherTransmitsTheForce) {
   EXPECT_NEAR(contact_force / top, 1.0, 1e-4);
   EXPECT_NEAR(contact_force / bottom, 1.0, 1e-4);
   EXPECT_NEAR(contact_force / series, 1.0, 1e-3);
+  // energy balance: the reactions' work is stored in the blocks and the contact springs (or
+  // damped out); the contact adds no energy of its own (1 %, as SolidExplicit's balance)
+  const SolidEnergy& blocks_energy = model.energy();
+  const double stored = blocks_energy.internal + blocks_energy.hourglass + contact.stored_energy() +
+                        contact.dissipated_energy() + loop.kinetic_energy();
+  const double balance =
+      std::abs(loop.external_work() - loop.damping_work() - stored) / loop.external_work();
+  EXPECT_LT(balance, 0.01);
+  // the penalty layer under the uniform pressure F / A stores 1/2 F^2 / (penalty A)
+  EXPECT_NEAR(contact.stored_energy() /
+                  (0.5 * contact_force * contact_force / (settings.normal_penalty * area)),
+              1.0, 1e-3);
   RecordProperty("contact_over_series", std::to_string(contact_force / series));
+  RecordProperty("energy_balance_error", std::to_string(balance * 1e6) + "e-6");
   RecordProperty("steps", std::to_string(loop.steps()));
 }
 
@@ -257,6 +278,14 @@ TEST(ContactBlocks, ABlockSlidOnAnotherUnderANormalLoadCarriesKappaN) {
                                     1.2 * kSide / (shear_modulus * kSide * kSide));
   const double interface_slip = slide - flexibility * friction_x;
   EXPECT_NEAR(work / (0.1 * normal * interface_slip), 1.0, 0.02);
+  // energy balance with friction: the plate's work is stored, dissipated by friction or damped
+  const SolidEnergy& blocks_energy = model.energy();
+  const double accounted = blocks_energy.internal + blocks_energy.hourglass +
+                           contact.stored_energy() + contact.dissipated_energy() +
+                           loop.kinetic_energy() + loop.damping_work();
+  const double balance = std::abs(loop.external_work() - accounted) / loop.external_work();
+  EXPECT_LT(balance, 0.01);
+  RecordProperty("energy_balance_error", std::to_string(balance * 1e6) + "e-6");
   RecordProperty("friction_over_kappa_n", std::to_string(friction_x / (0.1 * normal)));
   RecordProperty("dissipated_over_kappa_n_slip",
                  std::to_string(work / (0.1 * normal * interface_slip)));
