@@ -20,7 +20,10 @@
 //    Coulomb return map and its dissipation. On slip the anchor moves by the slip increment,
 //    x_a + s_1 e_1 + s_2 e_2, projected back on the master surface: the anchor can cross to
 //    another face (the core slides along the whole casing) and T = k_T u holds again with the
-//    new anchor. Force: T = T_1 e_1 + T_2 e_2; -T on s, +T N_b(xi_a) on the anchor face.
+//    new anchor (a moved anchor that falls off the master surface's free edge restarts at the
+//    contact point: the next step starts from T = 0 there).
+//    Force: T = T_1 e_1 + T_2 e_2; T on s, -T N_b(xi_a) on the anchor face (internal-force
+//    sense: the spring pulls the slave back towards its anchor).
 //    Stored energy 1/2 |T|^2 / k_T = 1/2 k_T |u|^2 in stick; its exact gradient also has the
 //    term of the tangent plane's rotation, -k_T (d . n) u . dn (d . n = g on a flat face):
 //    kept (with dn from t_1, t_2 and the closest point's variation dxi), so in stick the force
