@@ -27,6 +27,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace brb::solid {
 
@@ -60,10 +61,6 @@ double distance_to_box(const Eigen::Matrix<double, 3, 4>& nodes, const Eigen::Ve
   const Eigen::Vector3d outside =
       (low - point).cwiseMax(point - high).cwiseMax(Eigen::Vector3d::Zero());
   return outside.norm();
-}
-
-void add_to_node(Eigen::VectorXd& force, int node, const Eigen::Vector3d& value) {
-  force.segment<3>(3 * static_cast<Eigen::Index>(node)) += value;
 }
 
 void check_surface(const std::vector<QuadFace>& faces, const char* name,
@@ -188,7 +185,8 @@ void NodeToSurfaceContact::update_buckets(Pass& pass, const Configuration& confi
 NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
                                                              const Configuration& configuration,
                                                              const Eigen::Vector3d& point,
-                                                             int own_node) {
+                                                             int own_node,
+                                                             NodeRecord& record) const {
   // Faces on which the point projects inside come first; only when there is none, a face on
   // whose extension it projects at most kEdgeTolerance beyond an edge (see the header).
   constexpr double kEdgeTolerance = 0.05;
@@ -200,10 +198,10 @@ NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
     if (std::find(face.begin(), face.end(), own_node) != face.end())
       continue;
     const Eigen::Matrix<double, 3, 4> nodes = configuration.face(face);
-    ++statistics_.box_tests_last_call;
+    ++record.box_tests;
     if (distance_to_box(nodes, point) > settings_.search_distance)
       continue;
-    ++statistics_.projections_last_call;
+    ++record.projections;
     const QuadProjection projection = project_on_quad(nodes, point);
     if (!projection.converged || projection.excess > kEdgeTolerance)
       continue;
@@ -219,19 +217,23 @@ NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
   return inside.face >= 0 ? inside : near_edge;
 }
 
-bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
-                                           const Configuration& configuration,
-                                           Eigen::VectorXd& force, std::string& reason) {
+void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
+                                           const Configuration& configuration) const {
   const int slave = pass.slave_nodes[i];
   const NodeContactState& committed = pass.committed[i];
   NodeContactState& trial = pass.trial[i];
   trial = NodeContactState{};
   trial.dissipated_energy = committed.dissipated_energy;
+  NodeRecord& record = pass.records[i];
+  record.count = 0;
+  record.projections = 0;
+  record.box_tests = 0;
+  record.failed = false;
 
   const Eigen::Vector3d x_s = configuration.position(slave);
-  const Hit hit = nearest_face(pass, configuration, x_s, slave);
+  const Hit hit = nearest_face(pass, configuration, x_s, slave, record);
   if (hit.face < 0 || !(hit.projection.gap < 0.0))
-    return true; // open
+    return; // open
   const QuadPoint& contact = hit.projection.point;
   const double gap = hit.projection.gap; // (C1)
   if (gap < -0.5 * settings_.search_distance) {
@@ -239,8 +241,9 @@ bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
     message << "node-to-surface contact: node " << slave << " penetrates master face " << hit.face
             << " by " << -gap << " mm, more than half the search distance ("
             << settings_.search_distance << " mm): the penalty is too soft or the step too large";
-    reason = message.str();
-    return false;
+    record.failed = true;
+    record.reason = message.str();
+    return;
   }
   const QuadFace& contact_face = pass.master_faces[static_cast<std::size_t>(hit.face)];
   const Eigen::Vector3d& n = contact.normal;
@@ -273,7 +276,7 @@ bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
     // move the anchor by the slip increment, back onto the master surface (maybe another face)
     const Eigen::Vector3d target =
         x_a + response.state.slip.x() * e1 + response.state.slip.y() * e2;
-    const Hit moved = nearest_face(pass, configuration, target, slave);
+    const Hit moved = nearest_face(pass, configuration, target, slave, record);
     if (moved.face >= 0) {
       anchor_face = moved.face;
       anchor_natural = moved.projection.point.natural;
@@ -290,13 +293,13 @@ bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
   const double N = response.normal_force;
 
   // (C2) normal, (C4) friction spring
-  add_to_node(force, slave, -N * n + T);
+  record.add(slave, -N * n + T);
   for (int a = 0; a < 4; ++a)
-    add_to_node(force, contact_face[a], N * contact.shape.value[a] * n);
+    record.add(contact_face[a], N * contact.shape.value[a] * n);
   const QuadFace& anchor_nodes = pass.master_faces[static_cast<std::size_t>(anchor_face)];
   const QuadShape anchor_shape = QuadShape::at(anchor_natural);
   for (int b = 0; b < 4; ++b)
-    add_to_node(force, anchor_nodes[b], -anchor_shape.value[b] * T);
+    record.add(anchor_nodes[b], -anchor_shape.value[b] * T);
 
   // (C5) rotation of the tangent plane
   const double normal_offset = d.dot(n);
@@ -313,12 +316,11 @@ bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
     const Eigen::Vector2d w = A.inverse() * r;
     const Eigen::Vector3d w_t = w.x() * t1 + w.y() * t2;
     const double scale = -k_T * normal_offset;
-    add_to_node(force, slave, scale * w_t);
+    record.add(slave, scale * w_t);
     for (int a = 0; a < 4; ++a) {
       const Eigen::Vector2d dN = contact.shape.gradient.row(a).transpose();
-      add_to_node(
-          force, contact_face[a],
-          scale * (dN.x() * c1 + dN.y() * c2 - contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
+      record.add(contact_face[a], scale * (dN.x() * c1 + dN.y() * c2 -
+                                           contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
     }
   }
 
@@ -334,10 +336,16 @@ bool NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
   trial.anchor_natural = anchor_natural;
   trial.dissipated_energy = response.state.dissipated_energy;
   if (!T.allFinite() || !std::isfinite(N)) {
-    reason = "node-to-surface contact: non-finite force at node " + std::to_string(slave);
-    return false;
+    record.failed = true;
+    record.reason = "node-to-surface contact: non-finite force at node " + std::to_string(slave);
   }
-  return true;
+}
+
+void NodeToSurfaceContact::set_threads(int threads) {
+  if (threads < 1)
+    throw std::invalid_argument("node-to-surface contact: threads must be >= 1 (got " +
+                                std::to_string(threads) + ")");
+  threads_ = threads;
 }
 
 bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
@@ -360,9 +368,34 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
   statistics_.nodes_slipping = 0;
   for (Pass& pass : passes_) {
     update_buckets(pass, configuration);
-    for (std::size_t i = 0; i < pass.slave_nodes.size(); ++i) {
-      if (!contact_of_node(pass, i, configuration, force, reason))
+    const std::size_t n = pass.slave_nodes.size();
+    pass.records.resize(n);
+    const auto block = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        contact_of_node(pass, i, configuration);
+    };
+    const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(threads_), n);
+    if (threads <= 1) {
+      block(0, n);
+    } else {
+      std::vector<std::jthread> pool;
+      pool.reserve(threads - 1);
+      for (std::size_t t = 1; t < threads; ++t)
+        pool.emplace_back(block, n * t / threads, n * (t + 1) / threads);
+      block(0, n / threads);
+    } // the pool joins here
+    // in node order: the first failure, the forces and the counts (the same for any threads)
+    for (std::size_t i = 0; i < n; ++i) {
+      const NodeRecord& record = pass.records[i];
+      if (record.failed) {
+        reason = record.reason;
         return false;
+      }
+      for (int k = 0; k < record.count; ++k)
+        force.segment<3>(3 * static_cast<Eigen::Index>(record.node[static_cast<std::size_t>(k)])) +=
+            record.value[static_cast<std::size_t>(k)];
+      statistics_.projections_last_call += record.projections;
+      statistics_.box_tests_last_call += record.box_tests;
       statistics_.nodes_in_contact += pass.trial[i].in_contact ? 1 : 0;
       statistics_.nodes_slipping += pass.trial[i].slipping ? 1 : 0;
     }

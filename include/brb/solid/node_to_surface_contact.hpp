@@ -46,8 +46,11 @@
 // a rebuild, O(n + F), happens only after sliding half a bucket.
 //
 // Trial / commit as SolidInteraction: add_force() writes trial states only, commit() accepts
-// them. Two-pass mode: each surface is also the master of the other's nodes, with half the
-// penalty in each pass (symmetric treatment, no preferred surface).
+// them. Threads (set_threads): the slave nodes are shared among threads in contiguous blocks,
+// each node writes only its own record (its forces on at most 13 nodes, its search counts),
+// and the records are added to the force vector in node order by one thread, so results are
+// bitwise the same for every thread count. Two-pass mode: each surface is also the master of the
+// other's nodes, with half the penalty in each pass (symmetric treatment, no preferred surface).
 #pragma once
 
 #include "brb/material/penalty_friction.hpp"
@@ -57,6 +60,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -120,6 +124,10 @@ public:
   double trial_stored_energy() const;
   double trial_dissipated_energy() const;
 
+  /// Threads of the slave-node loop (>= 1; default 1). Throws std::invalid_argument below 1.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+
   const NodeToSurfaceContactSettings& settings() const { return settings_; }
   const ContactStatistics& statistics() const { return statistics_; }
 
@@ -133,6 +141,24 @@ public:
   const std::vector<NodeContactState>& trial_states(int pass) const;
 
 private:
+  /// What one slave node adds to the force vector, and what its search cost.
+  struct NodeRecord {
+    static constexpr int kCapacity = 16; // slave, contact face (normal, rotation), anchor face
+    int count = 0;
+    std::array<int, kCapacity> node{};
+    std::array<Eigen::Vector3d, kCapacity> value;
+    long projections = 0;
+    long box_tests = 0;
+    bool failed = false;
+    std::string reason;
+
+    void add(int at, const Eigen::Vector3d& force) {
+      node[static_cast<std::size_t>(count)] = at;
+      value[static_cast<std::size_t>(count)] = force;
+      ++count;
+    }
+  };
+
   struct Pass {
     std::vector<int> slave_nodes;
     std::vector<double> normal_stiffness;
@@ -143,6 +169,7 @@ private:
     bool buckets_built = false;
     Eigen::Matrix3Xd master_displacement_at_build; // one column per master node
     std::vector<NodeContactState> committed, trial;
+    std::vector<NodeRecord> records; // of the last add_force, one per slave node
   };
 
   struct Configuration; // reference + displacement, node by node (no O(n) copy per call)
@@ -159,16 +186,17 @@ private:
     QuadProjection projection;
   };
   Hit nearest_face(const Pass& pass, const Configuration& configuration,
-                   const Eigen::Vector3d& point, int own_node);
+                   const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
   /// Rebuilds the pass's buckets when a master node moved by more than half a bucket.
   void update_buckets(Pass& pass, const Configuration& configuration);
-  /// The trial contact of slave `i` of `pass`; adds its forces. False on a too deep
-  /// penetration or a non-finite force.
-  bool contact_of_node(Pass& pass, std::size_t i, const Configuration& configuration,
-                       Eigen::VectorXd& force, std::string& reason);
+  /// The trial contact of slave `i` of `pass` into pass.trial[i] and pass.records[i] (its
+  /// own slots: safe on any thread); record.failed on a too deep penetration or a non-finite
+  /// force.
+  void contact_of_node(Pass& pass, std::size_t i, const Configuration& configuration) const;
 
   Eigen::Matrix3Xd reference_;
   NodeToSurfaceContactSettings settings_;
+  int threads_ = 1;
   std::vector<Pass> passes_;
   ContactStatistics statistics_;
 };
