@@ -81,6 +81,31 @@ Eigen::Vector3d node_force(const Eigen::VectorXd& force, int node) {
   return force.segment<3>(3 * node);
 }
 
+/// Central differences of the trial stored energy on every DOF against `force` (the force
+/// of add_force at u), in stick: step 1e-6 mm, truncation O(1e-12) of the forces.
+void expect_force_is_the_energy_gradient(NodeToSurfaceContact& contact, const Eigen::VectorXd& u,
+                                         const Eigen::VectorXd& force) {
+  const double h = 1e-6;
+  Eigen::VectorXd numerical = Eigen::VectorXd::Zero(u.size());
+  for (Eigen::Index dof = 0; dof < u.size(); ++dof) {
+    Eigen::VectorXd plus = u, minus = u;
+    plus[dof] += h;
+    minus[dof] -= h;
+    force_at(contact, plus);
+    ASSERT_EQ(contact.statistics().nodes_slipping, 0);
+    const double energy_plus = contact.trial_stored_energy();
+    force_at(contact, minus);
+    const double energy_minus = contact.trial_stored_energy();
+    numerical[dof] = (energy_plus - energy_minus) / (2.0 * h);
+  }
+  const double largest = force.cwiseAbs().maxCoeff();
+  EXPECT_LT((force - numerical).cwiseAbs().maxCoeff(), 1e-7 * largest)
+      << "analytic\n"
+      << force.transpose() << "\nnumerical\n"
+      << numerical.transpose();
+  EXPECT_NEAR(force.sum(), 0.0, 1e-9 * largest); // equilibrium of the interaction
+}
+
 TEST(NodeToSurfaceContact, SourceContactPairHasNoForceUntilTheGapClosesThenKNTimesPenetration) {
   // BRB_SOURCE_FACTS section 6, contact pair: slave 0.12 mm from the master face, transverse
   // ramp of the slave to 0.25 mm, then held. Theory (section 4): N = k_N <-g>, g = 0.12 - w,
@@ -144,30 +169,35 @@ TEST(NodeToSurfaceContact, ForceIsMinusTheGradientOfTheStoredEnergyInStick) {
   const Eigen::VectorXd force = force_at(contact, u);
   ASSERT_EQ(contact.statistics().nodes_in_contact, 4);
   ASSERT_EQ(contact.statistics().nodes_slipping, 0);
-  double largest = 0.0, tangential = 0.0;
+  double tangential = 0.0;
   for (const NodeContactState& s : contact.trial_states(0))
     tangential = std::max(tangential, s.tangential_force.norm());
   ASSERT_GT(tangential, 0.0);
 
-  const double h = 1e-6;
-  Eigen::VectorXd numerical = Eigen::VectorXd::Zero(pair.dof_count());
-  for (int dof = 0; dof < pair.dof_count(); ++dof) {
-    Eigen::VectorXd plus = u, minus = u;
-    plus[dof] += h;
-    minus[dof] -= h;
-    force_at(contact, plus);
-    ASSERT_EQ(contact.statistics().nodes_slipping, 0);
-    const double energy_plus = contact.trial_stored_energy();
-    force_at(contact, minus);
-    const double energy_minus = contact.trial_stored_energy();
-    numerical[dof] = (energy_plus - energy_minus) / (2.0 * h);
-    largest = std::max(largest, std::abs(force[dof]));
+  expect_force_is_the_energy_gradient(contact, u, force);
+}
+
+TEST(NodeToSurfaceContact, ForceIsTheEnergyGradientWithTheAnchorOnAnotherFace) {
+  // Flat master of two faces meeting at x = 5; a small slave face (x in [4.996, 4.998])
+  // touches with its anchors on the first face and is then moved 0.005 mm along x in stick
+  // (kappa 0.5, so k_T u = 0.0065 k_N < kappa N = 0.025 k_N): the contact points are on the
+  // second face, the anchors stay on the first, and the force is still the gradient of the
+  // stored energy.
+  const Pair pair(2, 1, 5.0, {4.996, 1.0}, 0.002, 0.0);
+  NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master, settings_with(800.0, 1.3, 0.5));
+  Eigen::VectorXd u = pair.slave_moved({0, 0, -0.05});
+  force_at(contact, u);
+  contact.commit();
+  u = pair.slave_moved({0.005, 0, -0.05});
+  const Eigen::VectorXd force = force_at(contact, u);
+  ASSERT_EQ(contact.statistics().nodes_slipping, 0);
+  for (const NodeContactState& state : contact.trial_states(0)) {
+    ASSERT_EQ(state.face, 1);
+    ASSERT_EQ(state.anchor_face, 0);
+    // T = k_T u = 1.3 k_N 0.005, k_N = N / 0.05
+    EXPECT_NEAR(state.tangential_force.x() / (1.3 * state.normal_force / 0.05 * 0.005), 1.0, 1e-9);
   }
-  EXPECT_LT((force - numerical).cwiseAbs().maxCoeff(), 1e-7 * largest)
-      << "analytic\n"
-      << force.transpose() << "\nnumerical\n"
-      << numerical.transpose();
-  EXPECT_NEAR(force.sum(), 0.0, 1e-9 * largest); // equilibrium of the interaction
+  expect_force_is_the_energy_gradient(contact, u, force);
 }
 
 TEST(NodeToSurfaceContact, SticksWithKTUThenSlidesAtKappaNAndDissipatesKappaNTimesSlip) {
