@@ -47,7 +47,7 @@
 //
 // Trial / commit as SolidInteraction: add_force() writes trial states only, commit() accepts
 // them. Threads (set_threads): the slave nodes are shared among threads in contiguous blocks,
-// each node writes only its own record (its forces on at most 13 nodes, its search counts),
+// each node writes only its own record (at most 14 contributions on 9 nodes, its search counts),
 // and the records are added to the force vector in node order by one thread, so results are
 // bitwise the same for every thread count. Two-pass mode: each surface is also the master of the
 // other's nodes, with half the penalty in each pass (symmetric treatment, no preferred surface).
