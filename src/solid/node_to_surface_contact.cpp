@@ -1,0 +1,502 @@
+// Node-to-surface penalty contact with Coulomb friction (see node_to_surface_contact.hpp).
+//
+// Forces (internal-force sense, f = dW/dx with W the stored energy) of a slave node s in
+// contact with face c at xi_c, its anchor on face b at xi_a:
+//   (C1) g = (x_s - x_c) . n,  N = -k_N g
+//   (C2) normal:  f_s += -N n,  f_a += N N_a(xi_c) n (a on face c)
+//   (C3) d = x_s - x_b(xi_a),  u = (I - n n^T) d = T / k_T after the return map
+//   (C4) friction spring:  f_s += T,  f_b -= T N_b(xi_a)
+//   (C5) rotation of the tangent plane, -k_T (d . n) u . dn, with
+//        u . dn = sum_alpha c_alpha . dt_alpha,  c_1 = t_2 x u / J,  c_2 = u x t_1 / J,
+//        J = |t_1 x t_2|, dt_alpha = sum_a N_a,alpha dx_a + x_12 dxi_beta (beta != alpha),
+//        and the closest point's variation A dxi = (dx_s - sum_a N_a dx_a) . t_alpha
+//        + g n . sum_a N_a,alpha dx_a,  A = [t_a . t_b - g n . x_ab] (from (x_s - x_c) . t_alpha
+//        = 0); with r_beta = c_alpha . x_12 (alpha != beta), w = A^-1 r:
+//        f_s += -k_T (d . n) sum_alpha w_alpha t_alpha
+//        f_a += -k_T (d . n) [sum_alpha N_a,alpha c_alpha - N_a sum_alpha w_alpha t_alpha
+//                             + g (sum_alpha w_alpha N_a,alpha) n]
+#include "brb/solid/node_to_surface_contact.hpp"
+
+#include "brb/material/parameter_error.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace brb::solid {
+
+struct NodeToSurfaceContact::Configuration {
+  const Eigen::Matrix3Xd& reference;
+  Eigen::Map<const Eigen::Matrix3Xd> displacement;
+
+  Eigen::Vector3d position(int node) const { return reference.col(node) + displacement.col(node); }
+  Eigen::Matrix<double, 3, 4> face(const QuadFace& face) const {
+    Eigen::Matrix<double, 3, 4> nodes;
+    for (int a = 0; a < 4; ++a)
+      nodes.col(a) = position(face[a]);
+    return nodes;
+  }
+};
+
+namespace {
+
+void require(bool valid, const char* field, const std::string& expected, double value) {
+  if (valid)
+    return;
+  std::ostringstream message;
+  message << "node-to-surface contact: " << field << " must be " << expected << ", got " << value;
+  throw ParameterError(field, message.str());
+}
+
+/// Distance from `point` to the axis-aligned bounding box of the face's current nodes.
+double distance_to_box(const Eigen::Matrix<double, 3, 4>& nodes, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d low = nodes.rowwise().minCoeff();
+  const Eigen::Vector3d high = nodes.rowwise().maxCoeff();
+  const Eigen::Vector3d outside =
+      (low - point).cwiseMax(point - high).cwiseMax(Eigen::Vector3d::Zero());
+  return outside.norm();
+}
+
+void check_surface(const std::vector<QuadFace>& faces, const char* name,
+                   const Eigen::Matrix3Xd& reference) {
+  const auto fail = [&](std::size_t f, const std::string& what) {
+    std::ostringstream message;
+    message << "node-to-surface contact: " << name << "[" << f << "]: " << what;
+    throw std::invalid_argument(message.str());
+  };
+  if (faces.empty()) {
+    std::ostringstream message;
+    message << "node-to-surface contact: " << name << " has no face (expected at least one)";
+    throw std::invalid_argument(message.str());
+  }
+  const long node_count = reference.cols();
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    Eigen::Matrix<double, 3, 4> nodes;
+    for (int a = 0; a < 4; ++a) {
+      const int node = faces[f][a];
+      if (node < 0 || node >= node_count)
+        fail(f, "node " + std::to_string(node) + " is not a node of the model (expected 0.." +
+                    std::to_string(node_count - 1) + ")");
+      for (int b = 0; b < a; ++b)
+        if (faces[f][b] == node)
+          fail(f, "node " + std::to_string(node) + " appears twice (expected 4 distinct nodes)");
+      nodes.col(a) = reference.col(node);
+    }
+    if (!(quad_area(nodes) > 0.0))
+      fail(f, "the face has no area (expected 4 nodes spanning a quadrilateral)");
+  }
+}
+
+} // namespace
+
+void NodeToSurfaceContactSettings::validate() const {
+  require(std::isfinite(normal_penalty) && normal_penalty > 0.0, "normal_penalty",
+          "finite and > 0 N/mm^3", normal_penalty);
+  require(std::isfinite(tangential_stiffness_ratio) && tangential_stiffness_ratio > 0.0,
+          "tangential_stiffness_ratio", "finite and > 0 (k_T / k_N)", tangential_stiffness_ratio);
+  require(std::isfinite(friction_coefficient) && friction_coefficient >= 0.0,
+          "friction_coefficient", "finite and >= 0", friction_coefficient);
+  require(std::isfinite(search_distance) && search_distance > 0.0, "search_distance",
+          "finite and > 0 mm", search_distance);
+}
+
+NodeToSurfaceContact::Pass
+NodeToSurfaceContact::make_pass(const Eigen::Matrix3Xd& reference,
+                                const std::vector<QuadFace>& slave, std::vector<QuadFace> master,
+                                double penalty, const NodeToSurfaceContactSettings& settings) {
+  Pass pass;
+  // tributary area: a quarter of each adjacent slave face's reference area
+  std::vector<double> area(static_cast<std::size_t>(reference.cols()), 0.0);
+  for (const QuadFace& face : slave) {
+    Eigen::Matrix<double, 3, 4> nodes;
+    for (int a = 0; a < 4; ++a)
+      nodes.col(a) = reference.col(face[a]);
+    const double quarter = 0.25 * quad_area(nodes);
+    for (int node : face)
+      area[static_cast<std::size_t>(node)] += quarter;
+  }
+  for (std::size_t node = 0; node < area.size(); ++node)
+    if (area[node] > 0.0) {
+      const double normal_stiffness = penalty * area[node];
+      pass.slave_nodes.push_back(static_cast<int>(node));
+      pass.normal_stiffness.push_back(normal_stiffness);
+      pass.laws.emplace_back(material::PenaltyFrictionParameters{
+          normal_stiffness, settings.tangential_stiffness_ratio * normal_stiffness,
+          settings.friction_coefficient});
+    }
+  pass.master_faces = std::move(master);
+  for (const QuadFace& face : pass.master_faces)
+    pass.master_nodes.insert(pass.master_nodes.end(), face.begin(), face.end());
+  std::sort(pass.master_nodes.begin(), pass.master_nodes.end());
+  pass.master_nodes.erase(std::unique(pass.master_nodes.begin(), pass.master_nodes.end()),
+                          pass.master_nodes.end());
+  pass.committed.resize(pass.slave_nodes.size());
+  pass.trial = pass.committed;
+  return pass;
+}
+
+NodeToSurfaceContact::NodeToSurfaceContact(Eigen::Matrix3Xd reference,
+                                           std::vector<QuadFace> slave_surface,
+                                           std::vector<QuadFace> master_surface,
+                                           const NodeToSurfaceContactSettings& settings)
+    : reference_(std::move(reference)), settings_(settings) {
+  settings_.validate();
+  if (!reference_.allFinite())
+    throw std::invalid_argument(
+        "node-to-surface contact: reference coordinates must be finite numbers");
+  check_surface(slave_surface, "slave_surface", reference_);
+  check_surface(master_surface, "master_surface", reference_);
+  // two-pass: each surface is the other's master with half the penalty, so the pair is as
+  // stiff as one pass when both see the same penetration
+  const double penalty =
+      settings_.two_pass ? 0.5 * settings_.normal_penalty : settings_.normal_penalty;
+  passes_.push_back(make_pass(reference_, slave_surface, master_surface, penalty, settings_));
+  if (settings_.two_pass)
+    passes_.push_back(make_pass(reference_, master_surface, slave_surface, penalty, settings_));
+}
+
+void NodeToSurfaceContact::update_buckets(Pass& pass, const Configuration& configuration) {
+  bool rebuild = !pass.buckets_built;
+  if (!rebuild) {
+    const double limit = 0.5 * pass.buckets.width();
+    for (std::size_t m = 0; m < pass.master_nodes.size() && !rebuild; ++m)
+      rebuild = (configuration.displacement.col(pass.master_nodes[m]) -
+                 pass.master_displacement_at_build.col(static_cast<Eigen::Index>(m)))
+                    .norm() > limit;
+  }
+  if (!rebuild)
+    return;
+  const Eigen::Matrix3Xd current = reference_ + configuration.displacement;
+  pass.buckets.build(current, pass.master_faces, settings_.search_distance);
+  pass.master_displacement_at_build.resize(3, static_cast<Eigen::Index>(pass.master_nodes.size()));
+  for (std::size_t m = 0; m < pass.master_nodes.size(); ++m)
+    pass.master_displacement_at_build.col(static_cast<Eigen::Index>(m)) =
+        configuration.displacement.col(pass.master_nodes[m]);
+  pass.buckets_built = true;
+  ++statistics_.bucket_builds;
+}
+
+NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
+                                                             const Configuration& configuration,
+                                                             const Eigen::Vector3d& point,
+                                                             int own_node,
+                                                             NodeRecord& record) const {
+  // Faces on which the point projects inside come first; only when there is none, a face on
+  // whose extension it projects at most kEdgeTolerance beyond an edge (see the header).
+  constexpr double kEdgeTolerance = 0.05;
+  Hit inside, near_edge;
+  double inside_distance = std::numeric_limits<double>::infinity();
+  double near_edge_distance = inside_distance;
+  for (int f : pass.buckets.candidates(point)) {
+    const QuadFace& face = pass.master_faces[static_cast<std::size_t>(f)];
+    if (std::find(face.begin(), face.end(), own_node) != face.end())
+      continue;
+    const Eigen::Matrix<double, 3, 4> nodes = configuration.face(face);
+    ++record.box_tests;
+    if (distance_to_box(nodes, point) > settings_.search_distance)
+      continue;
+    ++record.projections;
+    const QuadProjection projection = project_on_quad(nodes, point);
+    if (!projection.converged || projection.excess > kEdgeTolerance)
+      continue;
+    const double distance = std::abs(projection.gap);
+    if (projection.inside && distance < inside_distance) {
+      inside_distance = distance;
+      inside = {f, projection};
+    } else if (!projection.inside && distance < near_edge_distance) {
+      near_edge_distance = distance;
+      near_edge = {f, projection};
+    }
+  }
+  return inside.face >= 0 ? inside : near_edge;
+}
+
+void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
+                                           const Configuration& configuration) const {
+  const int slave = pass.slave_nodes[i];
+  const NodeContactState& committed = pass.committed[i];
+  NodeContactState& trial = pass.trial[i];
+  trial = NodeContactState{};
+  trial.dissipated_energy = committed.dissipated_energy;
+  NodeRecord& record = pass.records[i];
+  record.count = 0;
+  record.projections = 0;
+  record.box_tests = 0;
+  record.failed = false;
+
+  const Eigen::Vector3d x_s = configuration.position(slave);
+  const Hit hit = nearest_face(pass, configuration, x_s, slave, record);
+  if (hit.face < 0 || !(hit.projection.gap < 0.0))
+    return; // open
+  const QuadPoint& contact = hit.projection.point;
+  const double gap = hit.projection.gap; // (C1)
+  if (gap < -0.5 * settings_.search_distance) {
+    std::ostringstream message;
+    message << "node-to-surface contact: node " << slave << " penetrates master face " << hit.face
+            << " by " << -gap << " mm, more than half the search distance ("
+            << settings_.search_distance << " mm): the penalty is too soft or the step too large";
+    record.failed = true;
+    record.reason = message.str();
+    return;
+  }
+  const QuadFace& contact_face = pass.master_faces[static_cast<std::size_t>(hit.face)];
+  const Eigen::Vector3d& n = contact.normal;
+
+  // stick anchor: the committed one, or the contact point for a new contact
+  int anchor_face = hit.face;
+  Eigen::Vector2d anchor_natural = contact.natural;
+  if (committed.in_contact) {
+    anchor_face = committed.anchor_face;
+    anchor_natural = committed.anchor_natural;
+  }
+  const auto anchor_position = [&](int face, const Eigen::Vector2d& natural) {
+    return QuadPoint::at(configuration.face(pass.master_faces[static_cast<std::size_t>(face)]),
+                         natural)
+        .position;
+  };
+  Eigen::Vector3d x_a = anchor_position(anchor_face, anchor_natural);
+
+  // (C3) tangential relative displacement in the tangent plane's basis
+  const Eigen::Vector3d e1 = contact.tangents.col(0).normalized();
+  const Eigen::Vector3d e2 = n.cross(e1);
+  Eigen::Vector3d d = x_s - x_a;
+  const material::PenaltyFriction& law = pass.laws[i];
+  material::FrictionState start;
+  start.dissipated_energy = committed.dissipated_energy; // slip zero: the anchor carries it
+  const material::PenaltyFriction::Response response =
+      law.evaluate(start, gap, Eigen::Vector2d(e1.dot(d), e2.dot(d)));
+
+  if (response.slipping) {
+    // move the anchor by the slip increment, back onto the master surface (maybe another face)
+    const Eigen::Vector3d target =
+        x_a + response.state.slip.x() * e1 + response.state.slip.y() * e2;
+    const Hit moved = nearest_face(pass, configuration, target, slave, record);
+    if (moved.face >= 0) {
+      anchor_face = moved.face;
+      anchor_natural = moved.projection.point.natural;
+    } else { // slid off the master surface's edge: restart from the contact point
+      anchor_face = hit.face;
+      anchor_natural = contact.natural;
+    }
+    x_a = anchor_position(anchor_face, anchor_natural);
+    d = x_s - x_a;
+  }
+
+  const double k_T = law.parameters().tangential_stiffness;
+  const Eigen::Vector3d T = response.tangential_force.x() * e1 + response.tangential_force.y() * e2;
+  const double N = response.normal_force;
+
+  // (C2) normal, (C4) friction spring
+  record.add(slave, -N * n + T);
+  for (int a = 0; a < 4; ++a)
+    record.add(contact_face[a], N * contact.shape.value[a] * n);
+  const QuadFace& anchor_nodes = pass.master_faces[static_cast<std::size_t>(anchor_face)];
+  const QuadShape anchor_shape = QuadShape::at(anchor_natural);
+  for (int b = 0; b < 4; ++b)
+    record.add(anchor_nodes[b], -anchor_shape.value[b] * T);
+
+  // (C5) rotation of the tangent plane
+  const double normal_offset = d.dot(n);
+  if (normal_offset != 0.0 && T.squaredNorm() > 0.0) {
+    const Eigen::Vector3d u = T / k_T;
+    const Eigen::Vector3d t1 = contact.tangents.col(0), t2 = contact.tangents.col(1);
+    const Eigen::Vector3d c1 = t2.cross(u) / contact.area_density;
+    const Eigen::Vector3d c2 = u.cross(t1) / contact.area_density;
+    Eigen::Matrix2d A;
+    A(0, 0) = t1.dot(t1);
+    A(1, 1) = t2.dot(t2);
+    A(0, 1) = A(1, 0) = t1.dot(t2) - gap * n.dot(contact.twist);
+    const Eigen::Vector2d r(c2.dot(contact.twist), c1.dot(contact.twist));
+    const Eigen::Vector2d w = A.inverse() * r;
+    const Eigen::Vector3d w_t = w.x() * t1 + w.y() * t2;
+    const double scale = -k_T * normal_offset;
+    record.add(slave, scale * w_t);
+    for (int a = 0; a < 4; ++a) {
+      const Eigen::Vector2d dN = contact.shape.gradient.row(a).transpose();
+      record.add(contact_face[a], scale * (dN.x() * c1 + dN.y() * c2 -
+                                           contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
+    }
+  }
+
+  trial.in_contact = true;
+  trial.slipping = response.slipping;
+  trial.face = hit.face;
+  trial.natural = contact.natural;
+  trial.gap = gap;
+  trial.normal_force = N;
+  trial.normal = n;
+  trial.tangential_force = T;
+  trial.anchor_face = anchor_face;
+  trial.anchor_natural = anchor_natural;
+  trial.dissipated_energy = response.state.dissipated_energy;
+  if (!T.allFinite() || !std::isfinite(N)) {
+    record.failed = true;
+    record.reason = "node-to-surface contact: non-finite force at node " + std::to_string(slave);
+  }
+}
+
+void NodeToSurfaceContact::set_threads(int threads) {
+  if (threads < 1)
+    throw std::invalid_argument("node-to-surface contact: threads must be >= 1 (got " +
+                                std::to_string(threads) + ")");
+  threads_ = threads;
+}
+
+bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
+                                     std::string& reason) {
+  const Eigen::Index dofs = 3 * reference_.cols();
+  if (displacement.size() != dofs || force.size() != dofs) {
+    reason = "node-to-surface contact: displacement and force must have " + std::to_string(dofs) +
+             " entries (3 per node)";
+    return false;
+  }
+  if (!displacement.allFinite()) {
+    reason = "node-to-surface contact: non-finite displacement";
+    return false;
+  }
+  const Configuration configuration{
+      reference_, Eigen::Map<const Eigen::Matrix3Xd>(displacement.data(), 3, reference_.cols())};
+  statistics_.projections_last_call = 0;
+  statistics_.box_tests_last_call = 0;
+  statistics_.nodes_in_contact = 0;
+  statistics_.nodes_slipping = 0;
+  for (Pass& pass : passes_) {
+    update_buckets(pass, configuration);
+    const std::size_t n = pass.slave_nodes.size();
+    pass.records.resize(n);
+    const auto block = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+        contact_of_node(pass, i, configuration);
+    };
+    const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(threads_), n);
+    if (threads <= 1) {
+      block(0, n);
+    } else {
+      std::vector<std::jthread> pool;
+      pool.reserve(threads - 1);
+      for (std::size_t t = 1; t < threads; ++t)
+        pool.emplace_back(block, n * t / threads, n * (t + 1) / threads);
+      block(0, n / threads);
+    } // the pool joins here
+    // in node order: the first failure, the forces and the counts (the same for any threads)
+    for (std::size_t i = 0; i < n; ++i) {
+      const NodeRecord& record = pass.records[i];
+      if (record.failed) {
+        reason = record.reason;
+        return false;
+      }
+      for (int k = 0; k < record.count; ++k)
+        force.segment<3>(3 * static_cast<Eigen::Index>(record.node[static_cast<std::size_t>(k)])) +=
+            record.value[static_cast<std::size_t>(k)];
+      statistics_.projections_last_call += record.projections;
+      statistics_.box_tests_last_call += record.box_tests;
+      statistics_.nodes_in_contact += pass.trial[i].in_contact ? 1 : 0;
+      statistics_.nodes_slipping += pass.trial[i].slipping ? 1 : 0;
+    }
+  }
+  return true;
+}
+
+void NodeToSurfaceContact::commit() {
+  for (Pass& pass : passes_)
+    pass.committed = pass.trial;
+}
+
+namespace {
+
+double stored_energy_of(const std::vector<NodeContactState>& states,
+                        const std::vector<material::PenaltyFriction>& laws) {
+  double energy = 0.0;
+  for (std::size_t i = 0; i < states.size(); ++i)
+    if (states[i].in_contact) {
+      const material::PenaltyFrictionParameters& p = laws[i].parameters();
+      energy += 0.5 * p.normal_stiffness * states[i].gap * states[i].gap +
+                0.5 * states[i].tangential_force.squaredNorm() / p.tangential_stiffness;
+    }
+  return energy;
+}
+
+double dissipated_energy_of(const std::vector<NodeContactState>& states) {
+  double energy = 0.0;
+  for (const NodeContactState& state : states)
+    energy += state.dissipated_energy;
+  return energy;
+}
+
+} // namespace
+
+double NodeToSurfaceContact::stored_energy() const {
+  double energy = 0.0;
+  for (const Pass& pass : passes_)
+    energy += stored_energy_of(pass.committed, pass.laws);
+  return energy;
+}
+
+double NodeToSurfaceContact::dissipated_energy() const {
+  double energy = 0.0;
+  for (const Pass& pass : passes_)
+    energy += dissipated_energy_of(pass.committed);
+  return energy;
+}
+
+double NodeToSurfaceContact::trial_stored_energy() const {
+  double energy = 0.0;
+  for (const Pass& pass : passes_)
+    energy += stored_energy_of(pass.trial, pass.laws);
+  return energy;
+}
+
+double NodeToSurfaceContact::trial_dissipated_energy() const {
+  double energy = 0.0;
+  for (const Pass& pass : passes_)
+    energy += dissipated_energy_of(pass.trial);
+  return energy;
+}
+
+double NodeToSurfaceContact::frequency_bound_squared(const Eigen::VectorXd& lumped_mass) const {
+  if (lumped_mass.size() != 3 * reference_.cols())
+    throw std::invalid_argument("node-to-surface contact: lumped mass must have " +
+                                std::to_string(3 * reference_.cols()) + " entries (3 per node)");
+  const auto node_mass = [&](int node) {
+    return lumped_mass.segment<3>(3 * static_cast<Eigen::Index>(node)).minCoeff();
+  };
+  // the contact point's force is shared by N_a, so its effective inverse mass
+  // sum_a N_a^2 / m_a is at most that of the lightest master node
+  double bound = 0.0;
+  for (const Pass& pass : passes_) {
+    double lightest_master = std::numeric_limits<double>::infinity();
+    for (int node : pass.master_nodes)
+      lightest_master = std::min(lightest_master, node_mass(node));
+    for (std::size_t i = 0; i < pass.slave_nodes.size(); ++i) {
+      const material::PenaltyFrictionParameters& p = pass.laws[i].parameters();
+      const double stiffness = std::max(p.normal_stiffness, p.tangential_stiffness);
+      bound = std::max(bound,
+                       stiffness * (1.0 / node_mass(pass.slave_nodes[i]) + 1.0 / lightest_master));
+    }
+  }
+  return bound;
+}
+
+const std::vector<int>& NodeToSurfaceContact::slave_nodes(int pass) const {
+  return passes_.at(static_cast<std::size_t>(pass)).slave_nodes;
+}
+const std::vector<QuadFace>& NodeToSurfaceContact::master_faces(int pass) const {
+  return passes_.at(static_cast<std::size_t>(pass)).master_faces;
+}
+const std::vector<double>& NodeToSurfaceContact::normal_stiffness(int pass) const {
+  return passes_.at(static_cast<std::size_t>(pass)).normal_stiffness;
+}
+const std::vector<NodeContactState>& NodeToSurfaceContact::states(int pass) const {
+  return passes_.at(static_cast<std::size_t>(pass)).committed;
+}
+const std::vector<NodeContactState>& NodeToSurfaceContact::trial_states(int pass) const {
+  return passes_.at(static_cast<std::size_t>(pass)).trial;
+}
+
+} // namespace brb::solid
