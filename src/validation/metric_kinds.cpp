@@ -369,7 +369,7 @@ struct RecordLookup {
 
 RecordLookup compare_run_with_record(const RunData& run) {
   if (run.record == nullptr)
-    return {std::nullopt, "the specimen has no reference record"};
+    return {std::nullopt, "the specimen has no reference"};
   const RecordSeries& record = *run.record;
   const std::vector<CyclicStep>& steps = run.result.steps;
   if (steps.size() > record.deformation.size())
@@ -383,8 +383,8 @@ RecordLookup compare_run_with_record(const RunData& run) {
     model_force.push_back(steps[k].force);
   }
   if (deformation.empty())
-    return {std::nullopt, "no point of the record was reached"};
-  const std::string note = std::to_string(deformation.size()) + " record points" +
+    return {std::nullopt, "no point of the reference was reached"};
+  const std::string note = std::to_string(deformation.size()) + " reference points" +
                            (run.result.completed ? "" : " (the run stopped early)");
   try {
     return {compare_with_record(deformation, test_force, model_force,
@@ -402,31 +402,126 @@ MetricValue evaluate_record_nrms(const Json&, const RunData& run) {
   return {lookup.comparison->normalised_rms_error, lookup.note};
 }
 
-MetricValue evaluate_record_cycle_energy(const Json&, const RunData& run) {
+/// The compared cycle a record kind is asked about ("compared_cycle": k-th cycle of the
+/// comparison, 1-based, maximum to maximum), or nothing for "the worst scored cycle".
+std::optional<std::size_t> compared_cycle(const Json& metric) {
+  if (!metric.contains("compared_cycle"))
+    return std::nullopt;
+  return metric.at("compared_cycle").get<std::size_t>();
+}
+
+void check_compared_cycle(const io::JsonValue& metric) {
+  if (const auto cycle = metric.find("compared_cycle"))
+    positive_whole_number(*cycle, "compared cycle (1-based, maximum to maximum)");
+}
+
+/// The worst scored cycle's value (`worst`), or the value of the one cycle asked for
+/// (`of_cycle`, whether scored or not: a cycle named explicitly is judged), with a note.
+template <typename Worst, typename OfCycle>
+MetricValue record_cycle_value(const Json& metric, const RunData& run, Worst worst,
+                               OfCycle of_cycle) {
   const RecordLookup lookup = compare_run_with_record(run);
   if (!lookup.comparison)
     return {std::nullopt, lookup.note};
-  if (lookup.comparison->scored_cycles == 0)
-    return {std::nullopt, lookup.note + ": no cycle scored"};
-  return {lookup.comparison->max_cycle_energy_error,
-          lookup.note + ", " + std::to_string(lookup.comparison->scored_cycles) + " cycles"};
+  const RecordComparison& comparison = *lookup.comparison;
+  std::optional<double> value;
+  std::string note;
+  if (const auto k = compared_cycle(metric)) {
+    if (*k > comparison.cycles.size()) {
+      return {std::nullopt, lookup.note + ": compared cycle " + std::to_string(*k) +
+                                " does not exist (" + std::to_string(comparison.cycles.size()) +
+                                " cycles)"};
+    }
+    CycleComparison cycle = comparison.cycles[*k - 1];
+    note = lookup.note + ", compared cycle " + std::to_string(*k);
+    // A cycle asked for by name is judged even below the energy floor, but not without a
+    // reference loop (its relative errors are undefined).
+    cycle.scored = cycle.test_energy > 0.0;
+    if (!cycle.scored)
+      return {std::nullopt, note + ": the reference's loop has no energy"};
+    value = of_cycle(cycle);
+  } else {
+    if (comparison.scored_cycles == 0)
+      return {std::nullopt, lookup.note + ": no cycle scored"};
+    value = worst(comparison);
+    note = lookup.note + ", " + std::to_string(comparison.scored_cycles) + " cycles";
+  }
+  if (!std::isfinite(*value))
+    return {std::nullopt, note + ": a compared cycle has no peak in a direction"};
+  return {value, note};
 }
 
-MetricValue evaluate_record_beta(const Json&, const RunData& run) {
-  const RecordLookup lookup = compare_run_with_record(run);
-  if (!lookup.comparison)
-    return {std::nullopt, lookup.note};
-  if (lookup.comparison->scored_cycles == 0)
-    return {std::nullopt, lookup.note + ": no cycle scored"};
-  const double difference = lookup.comparison->max_beta_difference;
-  if (!std::isfinite(difference))
-    return {std::nullopt, lookup.note + ": a scored cycle of the model has no tension"};
-  return {difference,
-          lookup.note + ", " + std::to_string(lookup.comparison->scored_cycles) + " cycles"};
+void check_record_cycle_kind(const io::JsonValue& metric) {
+  check_compared_cycle(metric);
 }
 
-const std::array<MetricKind, 11>& registry() {
-  static const std::array<MetricKind, 11> kinds{{
+MetricValue evaluate_record_cycle_energy(const Json& metric, const RunData& run) {
+  return record_cycle_value(
+      metric, run, [](const RecordComparison& c) { return c.max_cycle_energy_error; },
+      [](const CycleComparison& c) { return c.energy_error(); });
+}
+
+MetricValue evaluate_record_beta(const Json& metric, const RunData& run) {
+  return record_cycle_value(
+      metric, run, [](const RecordComparison& c) { return c.max_beta_difference; },
+      [](const CycleComparison& c) { return c.beta_difference(); });
+}
+
+void check_record_peak_force(const io::JsonValue& metric) {
+  if (const auto direction = metric.find("direction"))
+    one_of(*direction, "direction", {"tension", "compression"});
+  check_compared_cycle(metric);
+}
+
+/// Relative error of the cycle's peak force in "direction" (tension, compression; absent:
+/// the larger of the two).
+MetricValue evaluate_record_peak_force(const Json& metric, const RunData& run) {
+  const std::string direction =
+      metric.contains("direction") ? metric.at("direction").get<std::string>() : "";
+  const bool tension = direction != "compression";
+  const bool compression = direction != "tension";
+  return record_cycle_value(
+      metric, run,
+      [&](const RecordComparison& c) {
+        return std::max(tension ? c.max_peak_tension_error : 0.0,
+                        compression ? c.max_peak_compression_error : 0.0);
+      },
+      [&](const CycleComparison& c) {
+        return std::max(tension ? c.peak_tension_error() : 0.0,
+                        compression ? c.peak_compression_error() : 0.0);
+      });
+}
+
+/// Cycles the model's failure may be away from the reference's by default ("within one
+/// cycle", issue 6).
+constexpr int kDefaultFailureCycleTolerance = 1;
+
+void check_record_failure_mode(const io::JsonValue& metric) {
+  if (const auto tolerance = metric.find("cycle_tolerance")) {
+    const double value = tolerance->number("cycle tolerance (whole cycles)");
+    if (!(value >= 0.0 && value == std::floor(value) && value < 1e6))
+      throw tolerance->error("cycle tolerance must be a whole number of cycles >= 0");
+  }
+}
+
+/// 1 when the model fails in the reference's mode within the cycle tolerance (or neither
+/// fails), else 0.
+MetricValue evaluate_record_failure_mode(const Json& metric, const RunData& run) {
+  if (run.record == nullptr || !run.record->failure)
+    return {std::nullopt, "the reference states no failure"};
+  const std::optional<FailureEvent> model = model_failure(run.result);
+  if (!model)
+    return {std::nullopt, "the model raised a flag but its step history was not recorded"};
+  const int tolerance = metric.contains("cycle_tolerance") ? metric.at("cycle_tolerance").get<int>()
+                                                           : kDefaultFailureCycleTolerance;
+  const FailureComparison comparison = compare_failures(*model, *run.record->failure, tolerance);
+  return {comparison.agrees ? 1.0 : 0.0, comparison.description + " (within " +
+                                             std::to_string(tolerance) + " cycle" +
+                                             (tolerance == 1 ? "" : "s") + ")"};
+}
+
+const std::array<MetricKind, 13>& registry() {
+  static const std::array<MetricKind, 13> kinds{{
       {"cycle_energy",
        "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
        "(\"amplitude_dy\")",
@@ -480,24 +575,39 @@ const std::array<MetricKind, 11>& registry() {
        check_residual_compression_ratio,
        evaluate_residual_compression_ratio},
       {"record_nrms",
-       "normalised RMS force error against the specimen's lab record (RMS of the difference "
-       "over the RMS of the test force, at the record's points)",
+       "normalised RMS force error against the specimen's reference (RMS of the difference "
+       "over the RMS of the reference force, at the compared points)",
        {},
        false,
        check_nothing,
        evaluate_record_nrms},
       {"record_cycle_energy",
-       "largest relative loop-energy error per scored cycle against the lab record",
-       {},
+       "largest relative loop-energy error per scored cycle against the reference (or of "
+       "\"compared_cycle\")",
+       {"compared_cycle"},
        false,
-       check_nothing,
+       check_record_cycle_kind,
        evaluate_record_cycle_energy},
       {"record_beta",
-       "largest |beta model - beta test| per scored cycle against the lab record",
-       {},
+       "largest |beta model - beta reference| per scored cycle (or of \"compared_cycle\")",
+       {"compared_cycle"},
        false,
-       check_nothing,
+       check_record_cycle_kind,
        evaluate_record_beta},
+      {"record_peak_force",
+       "largest relative error of the peak force per scored cycle (or of \"compared_cycle\"), "
+       "in \"direction\" tension or compression, or the larger of both",
+       {"direction", "compared_cycle"},
+       false,
+       check_record_peak_force,
+       evaluate_record_peak_force},
+      {"record_failure_mode",
+       "1 when the model fails in the reference's failure mode within \"cycle_tolerance\" "
+       "cycles (default 1) of the reference's cycle, or neither fails",
+       {"cycle_tolerance"},
+       true,
+       check_record_failure_mode,
+       evaluate_record_failure_mode},
   }};
   return kinds;
 }

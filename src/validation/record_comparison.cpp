@@ -57,6 +57,35 @@ double compression_tension_ratio(std::span<const double> force, CycleSpan cycle)
   return -compression / tension;
 }
 
+CyclePeaks cycle_peaks(std::span<const double> force, CycleSpan cycle) {
+  CyclePeaks peaks;
+  for (std::size_t i = cycle.first; i <= cycle.last; ++i) {
+    peaks.tension = std::max(peaks.tension, force[i]);
+    peaks.compression = std::max(peaks.compression, -force[i]);
+  }
+  return peaks;
+}
+
+namespace {
+
+/// |model - test| / test, infinite when the test has no peak (a model peak where the test has
+/// none is not a small error).
+double relative_peak_error(double model, double test) {
+  if (!(test > 0.0))
+    return model == test ? 0.0 : std::numeric_limits<double>::infinity();
+  return std::abs(model - test) / test;
+}
+
+} // namespace
+
+double CycleComparison::peak_tension_error() const {
+  return scored ? relative_peak_error(model_peaks.tension, test_peaks.tension) : 0.0;
+}
+
+double CycleComparison::peak_compression_error() const {
+  return scored ? relative_peak_error(model_peaks.compression, test_peaks.compression) : 0.0;
+}
+
 double CycleComparison::energy_error() const {
   return scored ? std::abs(model_energy - test_energy) / test_energy : 0.0;
 }
@@ -85,6 +114,8 @@ RecordComparison compare_with_record(std::span<const double> deformation,
     cycle.model_energy = loop_energy(deformation, model_force, span);
     cycle.test_beta = compression_tension_ratio(test_force, span);
     cycle.model_beta = compression_tension_ratio(model_force, span);
+    cycle.test_peaks = cycle_peaks(test_force, span);
+    cycle.model_peaks = cycle_peaks(model_force, span);
     largest_test_energy = std::max(largest_test_energy, cycle.test_energy);
     result.cycles.push_back(cycle);
   }
@@ -95,6 +126,10 @@ RecordComparison compare_with_record(std::span<const double> deformation,
       continue;
     ++result.scored_cycles;
     result.max_cycle_energy_error = std::max(result.max_cycle_energy_error, cycle.energy_error());
+    result.max_peak_tension_error =
+        std::max(result.max_peak_tension_error, cycle.peak_tension_error());
+    result.max_peak_compression_error =
+        std::max(result.max_peak_compression_error, cycle.peak_compression_error());
     // A model without positive force in the cycle has a NaN beta: the worst difference.
     const double beta = cycle.beta_difference();
     result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()

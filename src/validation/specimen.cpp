@@ -181,24 +181,144 @@ MetricSpec read_metric(const JsonValue& value, std::set<std::string>& names) {
   return metric;
 }
 
-RecordReference read_record(const JsonValue& value, const fs::path& directory,
-                            const fs::path& shared_directory) {
-  RecordReference record;
-  // (the reference object's schema is io/force_record.hpp's: file, columns, units,
-  // exclude_rows; "shared:" resolves against the shared directory)
-  record.source = io::read_force_record_reference(value, directory, shared_directory);
-  record.written = string_of(value.at("file", "the record's CSV file"), "file");
+ReferenceType reference_type(const JsonValue& object) {
+  const std::optional<JsonValue> type = object.find("type");
+  if (!type)
+    return ReferenceType::lab_record;
+  const std::string name = string_of(*type, "reference type");
+  for (const ReferenceType known :
+       {ReferenceType::lab_record, ReferenceType::solid_run, ReferenceType::solver_csv}) {
+    if (name == to_string(known))
+      return known;
+  }
+  throw type->error("unknown reference type \"" + name +
+                    "\": expected \"lab_record\" (a measured record, the default), "
+                    "\"solid_run\" (a `brb solid` output directory) or \"solver_csv\" (a "
+                    "force-deformation CSV of another 3D solver)");
+}
+
+FailureEvent read_failure(const JsonValue& value) {
+  value.expect_object({"failure_mode", "cycle"},
+                      "the reference's failure {\"failure_mode\": ..., \"cycle\": k}");
+  const JsonValue mode_value =
+      value.at("failure_mode", "the failure mode, one of " + failure_mode_names());
+  const std::string name = string_of(mode_value, "failure mode");
+  const std::optional<FailureMode> mode = failure_mode_named(name);
+  if (!mode) {
+    throw mode_value.error("unknown failure mode \"" + name + "\": expected one of " +
+                           failure_mode_names());
+  }
+  FailureEvent event{*mode, 0};
+  const std::optional<JsonValue> cycle = value.find("cycle");
+  if (*mode == FailureMode::none) {
+    if (cycle)
+      throw cycle->error("a reference that does not fail (\"none\") has no failure cycle");
+    return event;
+  }
+  if (!cycle)
+    throw value.error("missing \"cycle\": the protocol cycle (1-based) the failure happens in");
+  const double number = cycle->number("failure cycle");
+  if (!(number >= 1.0 && number == std::floor(number) && number < 1e9)) {
+    throw cycle->error("the failure cycle must be a whole number >= 1 (got " +
+                       io::describe_json_value(cycle->json()) + ")");
+  }
+  event.cycle = static_cast<int>(number);
+  return event;
+}
+
+/// A path of metrics.json: "shared:REST" against the shared directory, a relative one against
+/// the specimen's folder.
+fs::path resolved_path(const std::string& written, const fs::path& directory,
+                       const fs::path& shared_directory) {
+  const std::string_view prefix = shared_prefix;
+  if (written.starts_with(prefix))
+    return shared_directory / written.substr(prefix.size());
+  return fs::path(written).is_absolute() ? fs::path(written) : directory / written;
+}
+
+/// A reference read by io/force_record.hpp's reader (a lab record, a solver's CSV): the keys
+/// that reader does not know (type, failure, columns/time) are checked here and left out.
+void read_record_file(const JsonValue& value, const fs::path& directory,
+                      const fs::path& shared_directory, RecordReference& record) {
+  nlohmann::json plain = value.json();
+  plain.erase("type");
+  plain.erase("failure");
+  if (record.type == ReferenceType::solver_csv) {
+    const JsonValue columns = value.at(
+        "columns", "the column names {\"deformation\": ..., \"force\": ..., \"time\": ...}");
+    columns.expect_object({"deformation", "force", "time"},
+                          "the column names {\"deformation\", \"force\", \"time\" (optional, "
+                          "not used)}");
+    if (const auto time = columns.find("time")) {
+      record.time_column = string_of(*time, "time column name");
+      plain["columns"].erase("time");
+    }
+  }
+  const JsonValue plain_value(plain, value.source(), value.path());
+  record.source = io::read_force_record_reference(plain_value, directory, shared_directory);
+  record.written = string_of(value.at("file", "the reference's CSV file"), "file");
   if (!fs::is_regular_file(record.source.file))
     throw value.at("file", "").error("no such file: " + record.source.file.string());
+}
+
+RecordReference read_record(const JsonValue& value, const fs::path& directory,
+                            const fs::path& shared_directory) {
+  if (!value.json().is_object()) {
+    throw value.error("the reference must be an object {\"type\": \"lab_record\" | "
+                      "\"solid_run\" | \"solver_csv\", ...}");
+  }
+  RecordReference record;
+  record.type = reference_type(value);
+  switch (record.type) {
+  case ReferenceType::lab_record:
+    value.expect_object({"type", "file", "columns", "units", "exclude_rows", "failure"},
+                        "a lab record reference");
+    read_record_file(value, directory, shared_directory, record);
+    break;
+  case ReferenceType::solver_csv:
+    value.expect_object({"type", "file", "columns", "units", "exclude_rows", "failure"},
+                        "a solver CSV reference");
+    read_record_file(value, directory, shared_directory, record);
+    break;
+  case ReferenceType::solid_run: {
+    value.expect_object({"type", "directory", "failure"},
+                        "a `brb solid` run reference {\"type\": \"solid_run\", "
+                        "\"directory\": ..., \"failure\": ...}");
+    const JsonValue written =
+        value.at("directory", "the output directory of the `brb solid` run (--out)");
+    record.written = string_of(written, "directory");
+    const fs::path run = resolved_path(record.written, directory, shared_directory);
+    if (!fs::is_directory(run))
+      throw written.error("no such directory: " + run.string());
+    // The `brb cyclic` contract of hysteresis.csv (README): columns deformation (mm) and
+    // force (N), which `brb solid` writes too.
+    record.source.file = run / "hysteresis.csv";
+    record.source.format.deformation_column = "deformation";
+    record.source.format.force_column = "force";
+    if (!fs::is_regular_file(record.source.file))
+      throw written.error("the run directory has no hysteresis.csv: " +
+                          record.source.file.string());
+    break;
+  }
+  }
+  if (const auto failure = value.find("failure"))
+    record.failure = read_failure(*failure);
   return record;
 }
 
 void read_comparison(const JsonValue& value, RecordReference& record) {
-  value.expect_object({"record_row_column", "reversal_threshold_dy", "energy_floor_fraction"},
-                      "comparison: {\"record_row_column\", \"reversal_threshold_dy\", "
-                      "\"energy_floor_fraction\"}");
-  if (const auto column = value.find("record_row_column"))
+  value.expect_object(
+      {"record_row_column", "reversal_threshold_dy", "energy_floor_fraction", "path_tolerance_dy"},
+      "comparison: {\"record_row_column\", \"reversal_threshold_dy\", "
+      "\"energy_floor_fraction\", \"path_tolerance_dy\"}");
+  const bool lab_record = record.type == ReferenceType::lab_record;
+  if (const auto column = value.find("record_row_column")) {
+    if (!lab_record) {
+      throw column->error("record_row_column is for a lab_record reference; a " +
+                          to_string(record.type) + " is matched along the deformation path");
+    }
     record.record_row_column = string_of(*column, "record_row_column");
+  }
   if (const auto threshold = value.find("reversal_threshold_dy")) {
     record.reversal_threshold_dy = threshold->number("reversal threshold in dy");
     if (!(record.reversal_threshold_dy >= 0.0))
@@ -209,9 +329,30 @@ void read_comparison(const JsonValue& value, RecordReference& record) {
     if (!(record.energy_floor_fraction >= 0.0 && record.energy_floor_fraction < 1.0))
       throw floor->error("the energy floor must be a fraction in [0, 1)");
   }
+  if (const auto tolerance = value.find("path_tolerance_dy")) {
+    if (lab_record) {
+      throw tolerance->error("path_tolerance_dy is for solid_run and solver_csv references; a "
+                             "lab record is matched by its rows (record_row_column)");
+    }
+    record.path_tolerance_dy = tolerance->number("path tolerance in dy");
+    if (!(record.path_tolerance_dy > 0.0))
+      throw tolerance->error("the path tolerance must be > 0 dy");
+  }
 }
 
 } // namespace
+
+std::string to_string(ReferenceType type) {
+  switch (type) {
+  case ReferenceType::lab_record:
+    return "lab_record";
+  case ReferenceType::solid_run:
+    return "solid_run";
+  case ReferenceType::solver_csv:
+    break;
+  }
+  return "solver_csv";
+}
 
 Specimen read_specimen(const fs::path& directory, const fs::path& shared_directory) {
   Specimen specimen;
@@ -250,7 +391,7 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
     specimen.record = read_record(*record, directory, shared_directory);
   if (const auto comparison = root.find("comparison")) {
     if (!specimen.record)
-      throw comparison->error("a comparison needs a reference record");
+      throw comparison->error("a comparison needs a reference");
     read_comparison(*comparison, *specimen.record);
   }
   if (const auto role = root.find("role")) {
@@ -268,8 +409,16 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
   const JsonValue metrics = root.at("metrics", "the list of metrics");
   const std::size_t count = metrics.expect_array(1000, "metrics: a list of metric objects");
   std::set<std::string> names;
-  for (std::size_t i = 0; i < count; ++i)
+  for (std::size_t i = 0; i < count; ++i) {
     specimen.metrics.push_back(read_metric(metrics.element(i), names));
+    if (specimen.metrics.back().kind == "record_failure_mode" &&
+        !(specimen.record && specimen.record->failure)) {
+      throw metrics.element(i).error(
+          "a record_failure_mode metric needs the reference's \"failure\": "
+          "{\"failure_mode\": " +
+          failure_mode_names() + ", \"cycle\": k}");
+    }
+  }
   return specimen;
 }
 

@@ -11,6 +11,7 @@
 #include "brb/io/protocol.hpp"
 #include "brb/material/parameter_error.hpp"
 #include "brb/model/brace_model.hpp"
+#include "brb/validation/reference_path.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -166,7 +167,55 @@ RecordSeries record_series(const RecordReference& reference, const fs::path& pro
       io::record_force_at_rows(record, rows, protocol_file, reference.record_row_column);
   series.reversal_threshold = reference.reversal_threshold_dy * yield_deformation;
   series.energy_floor_fraction = reference.energy_floor_fraction;
+  series.failure = reference.failure;
   return series;
+}
+
+/// A reference sampled its own way (a `brb solid` run, a solver's CSV) at the protocol's
+/// points, matched along the deformation path (reference_path.hpp). A reference whose path
+/// is not the protocol's (more than path_tolerance_dy apart at the same travel) is an input
+/// error: its forces would be compared at other deformations.
+RecordSeries path_matched_series(const RecordReference& reference,
+                                 const io::LoadingProtocol& protocol, double yield_deformation) {
+  const std::string file = reference.source.file.string();
+  const io::ForceRecord curve =
+      io::read_force_record(reference.source.file, reference.source.format);
+  if (reference.time_column) // read only to check that it is there and holds numbers
+    io::read_numeric_column(reference.source.file, *reference.time_column);
+  if (curve.size() < 2)
+    throw io::InputError(file, "",
+                         "a reference needs at least 2 points (it has " +
+                             std::to_string(curve.size()) + ")");
+  const PathMatch match = match_along_path(protocol.deformation, curve.deformation, curve.force);
+  const double tolerance = reference.path_tolerance_dy * yield_deformation;
+  if (match.largest_deformation_difference > tolerance) {
+    const std::size_t k = match.largest_difference_point;
+    throw io::InputError(
+        file, "",
+        "the reference does not follow the protocol's deformation path: at protocol point " +
+            std::to_string(k) + " (deformation " + io::format_number(protocol.deformation[k]) +
+            " mm) the reference, at the same deformation travel, is " +
+            io::format_number(match.largest_deformation_difference) +
+            " mm away, more than path_tolerance_dy = " +
+            io::format_number(reference.path_tolerance_dy) +
+            " dy = " + io::format_number(tolerance) + " mm");
+  }
+  RecordSeries series;
+  series.deformation = protocol.deformation;
+  series.test_force = match.force;
+  series.reversal_threshold = reference.reversal_threshold_dy * yield_deformation;
+  series.energy_floor_fraction = reference.energy_floor_fraction;
+  series.failure = reference.failure;
+  return series;
+}
+
+/// True when a metric needs the model's step history (the cycle of its failure).
+bool needs_history(const Specimen& specimen) {
+  for (const MetricSpec& metric : specimen.metrics) {
+    if (metric.kind == "record_failure_mode")
+      return true;
+  }
+  return false;
 }
 
 PreparedSpecimen prepare_specimen(Specimen specimen) {
@@ -180,9 +229,13 @@ PreparedSpecimen prepare_specimen(Specimen specimen) {
   const io::LoadingProtocol protocol =
       read_protocol_for(specimen.protocol_file, model.yield_deformation);
   prepared.protocol_points = protocol.deformation.size();
-  if (specimen.record)
+  if (specimen.record) {
     prepared.record =
-        record_series(*specimen.record, specimen.protocol_file, protocol, model.yield_deformation);
+        specimen.record->type == ReferenceType::lab_record
+            ? record_series(*specimen.record, specimen.protocol_file, protocol,
+                            model.yield_deformation)
+            : path_matched_series(*specimen.record, protocol, model.yield_deformation);
+  }
   prepared.specimen = std::move(specimen);
   return prepared;
 }
@@ -204,8 +257,10 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
       read_protocol_for(prepared.specimen.protocol_file, brace.yield_deformation);
 
   const auto start = std::chrono::steady_clock::now();
-  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
-      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+  const bool histories = needs_history(prepared.specimen);
+  const analysis::CyclicTestResult result =
+      analysis::run_cyclic_test(brace, protocol.deformation, protocol.cycle,
+                                protocol.cycle_amplitude, analysis::NewtonSettings{}, histories);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
   fs::create_directories(output_directory);
@@ -216,6 +271,9 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
       io::cyclic_summary_json(spec.name, brace.yield_deformation, brace.yield_force, result)
               .dump(2) +
           "\n");
+  if (histories) // the file `brb cyclic --histories` writes: where the failure cycle comes from
+    io::write_file_atomically(output_directory / "element_history.csv",
+                              io::element_history_table(result).text());
 
   RunOutcome outcome;
   outcome.refinement = refinement;

@@ -1,6 +1,7 @@
 // `brb validate` end to end: the real binary (BRB_CLI_PATH) on a validation folder made in a
 // temporary directory, with one tiny specimen (a short, stocky bare plate core through one
 // cycle at 2 dy) so that each run takes a fraction of a second.
+#include "brb/io/csv.hpp"
 #include "cli/run_brb.hpp"
 #include "io/scratch_directory.hpp"
 
@@ -161,6 +162,66 @@ TEST(ValidateCli, InputErrorsExitWithTwoAndWriteNothing) {
   const CliRun no_folder = run_brb("validate " + shell_quoted((scratch.path() / "none").string()));
   EXPECT_EQ(no_folder.exit_code, 2);
   EXPECT_NE(no_folder.err.find("not a directory"), std::string::npos) << no_folder.err;
+}
+
+TEST(ValidateCli, ComparesWithAnExternalSolversCsvAndRefusesBadUnits) {
+  // A reference made from the model's own first run (its hysteresis.csv re-exported with the
+  // solver's column names, force in kN): the second run compares with it at zero error (to
+  // the round-off of the kN conversion), and the stocky plate fails in neither.
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  // Two cycles, so that one full cycle (maximum to maximum) is compared.
+  scratch.write("validation/tiny/protocol.json",
+                R"({"units": "dy", "cycles": [{"amplitude": 2, "cycles": 2}], "max_step": 0.25})");
+  const CliRun first = run_brb("validate " + shell_quoted(folder.string()));
+  ASSERT_TRUE(first.exit_code == 0 || first.exit_code == 1) << first.err;
+  const fs::path hysteresis = folder / "tiny" / "out" / "x1" / "hysteresis.csv";
+  const auto deformation = brb::io::read_numeric_column(hysteresis, "deformation").values;
+  const auto force = brb::io::read_numeric_column(hysteresis, "force").values;
+  std::string csv = "Frame,U1 (mm),RF1 (kN)\n";
+  for (std::size_t k = 0; k < force.size(); ++k) {
+    csv += std::to_string(k) + "," + brb::io::format_number(deformation[k]) + "," +
+           brb::io::format_number(force[k] / 1000.0) + "\n";
+  }
+  scratch.write("validation/tiny/abaqus.csv", csv);
+
+  json metrics = tiny_metrics();
+  metrics["reference"] = {{"type", "solver_csv"},
+                          {"file", "abaqus.csv"},
+                          {"columns", {{"deformation", "U1 (mm)"}, {"force", "RF1 (kN)"}}},
+                          {"units", {{"force", "kN"}, {"length", "mm"}}},
+                          {"failure", {{"failure_mode", "none"}}}};
+  metrics["metrics"] =
+      json::array({{{"name", "nrms"},
+                    {"kind", "record_nrms"},
+                    {"reference", 0.0},
+                    {"tolerance", {{"absolute", 1e-12}}}},
+                   {{"name", "peaks"},
+                    {"kind", "record_peak_force"},
+                    {"reference", 0.0},
+                    {"tolerance", {{"absolute", 1e-12}}}},
+                   {{"name", "failure"}, {"kind", "record_failure_mode"}, {"expected", true}}});
+  scratch.write("validation/tiny/metrics.json", metrics.dump(2));
+  const CliRun second = run_brb("validate " + shell_quoted(folder.string()));
+  ASSERT_TRUE(second.exit_code == 0 || second.exit_code == 1) << second.err;
+  const json report = json::parse(read_file(folder / "report.json"));
+  const json& checks = report.at("specimens").at(0).at("runs").at(0).at("checks");
+  ASSERT_EQ(checks.size(), 5u);
+  for (std::size_t i = 2; i < 5; ++i)
+    EXPECT_EQ(checks[i].at("status"), "pass") << checks[i].dump();
+  EXPECT_EQ(checks[4].at("value"), 1.0);
+  // The failure needs the step history: written as `brb cyclic --histories` does.
+  EXPECT_TRUE(fs::is_regular_file(folder / "tiny" / "out" / "x1" / "element_history.csv"));
+
+  metrics["reference"]["units"]["force"] = "lbf";
+  scratch.write("validation/tiny/metrics.json", metrics.dump(2));
+  fs::remove(folder / "REPORT.md");
+  const CliRun bad_unit = run_brb("validate " + shell_quoted(folder.string()));
+  EXPECT_EQ(bad_unit.exit_code, 2);
+  EXPECT_NE(bad_unit.err.find("metrics.json: /reference/units/force: unknown force unit"),
+            std::string::npos)
+      << bad_unit.err;
+  EXPECT_FALSE(fs::exists(folder / "REPORT.md"));
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/json_input.hpp"
+#include "brb/validation/failure_mode.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -17,19 +18,21 @@
 
 namespace brb::validation {
 
-/// What a metric is evaluated on: one cyclic test of one specimen at one refinement. The
-/// kinds read the hysteresis (result.steps) and the indicators only, so that they apply to
-/// any force-deformation record.
-/// A lab record matched to the protocol's points (specimens with a reference record): the
-/// test force at protocol point k (NaN where the point is not a record point), and the
-/// comparison's settings.
+/// A reference (a lab record, a `brb solid` run or an external solver's export) matched to
+/// the protocol's points (specimens with a reference): the reference force at protocol point
+/// k (NaN where the point is not compared), the comparison's settings and the failure the
+/// reference states.
 struct RecordSeries {
   std::vector<double> deformation; ///< mm, the protocol's points
   std::vector<double> test_force;  ///< N, per point; NaN: not compared
   double reversal_threshold = 0.0; ///< mm
   double energy_floor_fraction = 0.05;
+  std::optional<FailureEvent> failure; ///< for record_failure_mode
 };
 
+/// What a metric is evaluated on: one cyclic test of one specimen at one refinement. The
+/// kinds read the hysteresis (result.steps) and the indicators only (and, for the failure
+/// cycle, result.history), so that they apply to any force-deformation record.
 struct RunData {
   const analysis::CyclicTestResult& result;
   double yield_deformation = 0.0;       ///< dy of the brace model, mm

@@ -44,6 +44,14 @@ double loop_energy(std::span<const double> deformation, std::span<const double> 
 /// NaN when the cycle has no positive force.
 double compression_tension_ratio(std::span<const double> force, CycleSpan cycle);
 
+/// Peak forces of `cycle` over its points (N, magnitudes): the largest force and the largest
+/// compression |min F|; 0 for a direction the cycle does not reach.
+struct CyclePeaks {
+  double tension = 0.0;
+  double compression = 0.0;
+};
+CyclePeaks cycle_peaks(std::span<const double> force, CycleSpan cycle);
+
 struct RecordComparisonOptions {
   /// mm (>= 0): reversal noise threshold for segment_cycles; the specimens use 0.1 dy.
   double reversal_threshold = 0.0;
@@ -60,10 +68,16 @@ struct CycleComparison {
   double model_energy = 0.0; ///< N mm
   double test_beta = 0.0;
   double model_beta = 0.0;
-  bool scored = false; ///< test energy at or above the floor
+  CyclePeaks test_peaks;  ///< N
+  CyclePeaks model_peaks; ///< N
+  bool scored = false;    ///< test energy at or above the floor
   /// |model - test| / test energy (scored cycles only; 0 otherwise).
   double energy_error() const;
   double beta_difference() const;
+  /// |model - test| / test peak force in tension and in compression (scored cycles only; 0
+  /// otherwise; infinite when the test cycle has no peak in that direction).
+  double peak_tension_error() const;
+  double peak_compression_error() const;
 };
 
 struct RecordComparison {
@@ -74,11 +88,15 @@ struct RecordComparison {
   double max_cycle_energy_error = 0.0;
   /// Largest |beta_model - beta_test| over the scored cycles (0 without one).
   double max_beta_difference = 0.0;
+  /// Largest relative error of the cycle's peak tension and peak compression over the scored
+  /// cycles (0 without one).
+  double max_peak_tension_error = 0.0;
+  double max_peak_compression_error = 0.0;
 };
 
-/// The three metrics of issue 4 for a model and a test force at the same deformation points
-/// (N, mm). Throws std::invalid_argument when the three series differ in length or are empty,
-/// or the test force is zero everywhere.
+/// The metrics of issue 4 (and the peaks per cycle of issue 6) for a model and a test force at the
+/// same deformation points (N, mm). Throws std::invalid_argument when the three series differ in
+/// length or are empty, or the test force is zero everywhere.
 RecordComparison compare_with_record(std::span<const double> deformation,
                                      std::span<const double> test_force,
                                      std::span<const double> model_force,

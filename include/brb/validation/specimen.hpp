@@ -6,6 +6,7 @@
 #pragma once
 
 #include "brb/io/force_record.hpp"
+#include "brb/validation/failure_mode.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -42,17 +43,42 @@ struct MetricSpec {
   std::string source;           ///< where the reference or bound comes from
 };
 
-/// A measured force-deformation record (a lab test) for the record-based metrics: the CSV
-/// file, its columns, units and excluded rows (io/force_record.hpp reads and converts it to N
-/// and mm at the edge), and how the model's points are matched to it.
+/// What a specimen's model is compared with (metrics.json's "reference"; schema in
+/// validation/README.md):
+/// - lab_record: a measured force-deformation record (a lab test) whose rows the protocol CSV
+///   names point by point (column record_row_column), model step k being protocol point k;
+/// - solid_run: the output directory of a `brb solid` run, its hysteresis.csv (the `brb
+///   cyclic` columns, N and mm);
+/// - solver_csv: a force-deformation CSV exported from another 3D solver (e.g. Abaqus), its
+///   columns named and its units given like a lab record's.
+/// The last two are sampled their own way and matched to the protocol's points along the
+/// deformation path (reference_path.hpp).
+enum class ReferenceType { lab_record, solid_run, solver_csv };
+
+/// "lab_record", "solid_run", "solver_csv".
+std::string to_string(ReferenceType type);
+
+/// A reference force-deformation history for the record-based metrics: the CSV file, its
+/// columns, units and excluded rows (io/force_record.hpp reads and converts it to N and mm at
+/// the edge), how the model's points are matched to it, and the failure it states.
 struct RecordReference {
-  io::ForceRecordReference source; ///< resolved file and format
-  std::string written;             ///< the path as written in metrics.json
-  /// The protocol CSV's column holding, per point, the record's 0-based data row (-1: not a
-  /// record point; not compared). Model step k is protocol point k.
+  ReferenceType type = ReferenceType::lab_record;
+  io::ForceRecordReference source; ///< resolved file and format (solid_run: its hysteresis.csv)
+  std::string written;             ///< the file (or directory) as written in metrics.json
+  /// solver_csv: the time column named in "columns" (checked to hold numbers; not used: the
+  /// comparison follows the deformation path, not time).
+  std::optional<std::string> time_column;
+  /// lab_record: the protocol CSV's column holding, per point, the record's 0-based data row
+  /// (-1: not a record point; not compared). Model step k is protocol point k.
   std::string record_row_column = "record_row";
   double reversal_threshold_dy = 0.1;  ///< cycle segmentation threshold, in dy
   double energy_floor_fraction = 0.05; ///< cycles below this share of the largest: not scored
+  /// solid_run, solver_csv: the most the reference's deformation may differ from the
+  /// protocol's at the same deformation travel (in dy) before the reference is refused as
+  /// following another path.
+  double path_tolerance_dy = 0.1;
+  /// The failure mode and cycle the reference states ("failure"), for record_failure_mode.
+  std::optional<FailureEvent> failure;
 };
 
 struct Specimen {
