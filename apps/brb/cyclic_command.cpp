@@ -45,25 +45,6 @@ constexpr const char* kElementHistoryFile = "element_history.csv";
 /// summary.json has them all.
 constexpr std::size_t kMostCyclesListed = 12;
 
-/// The brace's name in the outputs: its "name", or the brace file's name without extension.
-std::string brace_name(const model::BraceSpec& spec, const fs::path& file) {
-  return spec.name.empty() ? file.stem().string() : spec.name;
-}
-
-/// The brace's finite element model: the expanded full model, or the truss for
-/// "element": {"fidelity": "truss"} (the element mode only matters in frames). A ParameterError
-/// (inconsistent geometry, named by its key in the brace schema, e.g. "core/yielding_length")
-/// becomes an InputError at that JSON path of `file` ("/core/yielding_length"), with the value
-/// found there.
-model::BraceModel build_brace(const model::BraceSpec& spec, const fs::path& file) {
-  try {
-    return spec.element.fidelity == model::Fidelity::truss ? model::build_brace_truss_model(spec)
-                                                           : model::build_brace_model(spec);
-  } catch (const ParameterError& error) {
-    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
-  }
-}
-
 using io::converged_steps;
 
 /// "1 cycle", "3 cycles".
@@ -162,6 +143,25 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
 }
 
 } // namespace
+
+/// The brace's name in the outputs: its "name", or the brace file's name without extension.
+std::string brace_name(const model::BraceSpec& spec, const std::filesystem::path& file) {
+  return spec.name.empty() ? file.stem().string() : spec.name;
+}
+
+/// The brace's finite element model: the expanded full model, or the truss for
+/// "element": {"fidelity": "truss"} (the element mode only matters in frames). A ParameterError
+/// (inconsistent geometry, named by its key in the brace schema, e.g. "core/yielding_length")
+/// becomes an InputError at that JSON path of `file` ("/core/yielding_length"), with the value
+/// found there.
+model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesystem::path& file) {
+  try {
+    return spec.element.fidelity == model::Fidelity::truss ? model::build_brace_truss_model(spec)
+                                                           : model::build_brace_model(spec);
+  } catch (const ParameterError& error) {
+    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
+  }
+}
 
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
   auto* cyclic = app.add_subcommand(

@@ -2,12 +2,15 @@
 #pragma once
 
 #include "brb/analysis/static_analysis.hpp"
+#include "brb/model/brace_model.hpp"
+#include "brb/model/brace_spec.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <optional>
 #include <ostream>
+#include <string>
 
 namespace brb::cli {
 
@@ -24,6 +27,14 @@ struct CyclicCommand {
   /// Also write DIR/element_history.csv: the element outputs after every step.
   bool histories = false;
 };
+
+/// The brace's name in the outputs: its "name", or the brace file's name without extension.
+std::string brace_name(const model::BraceSpec& spec, const std::filesystem::path& file);
+
+/// The brace's finite element model (full or truss, as its "element" says); a ParameterError
+/// becomes an InputError at the JSON path of `file` it names. `brb solid` takes its dy and Py
+/// from it, so the 3D and the reduced model follow the same protocol points.
+model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesystem::path& file);
 
 /// Registers the sub-command and its options (stored into `command` when parsed).
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command);

@@ -9,6 +9,7 @@
 #include "frame_command.hpp"
 #include "ida_command.hpp"
 #include "material_command.hpp"
+#include "solid_command.hpp"
 #include "spectrum_command.hpp"
 #include "validate_command.hpp"
 
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
   const CLI::App* material = brb::cli::add_material_command(app, material_command);
   brb::cli::CyclicCommand cyclic_command;
   const CLI::App* cyclic = brb::cli::add_cyclic_command(app, cyclic_command);
+  brb::cli::SolidCommand solid_command;
+  const CLI::App* solid = brb::cli::add_solid_command(app, solid_command);
   brb::cli::FrameCommand frame_command;
   const CLI::App* frame = brb::cli::add_frame_command(app, frame_command);
   brb::cli::IdaCommand ida_command;
@@ -68,7 +71,7 @@ int main(int argc, char** argv) {
       return app.exit(error); // --help
     }
     std::cerr << "brb: error: " << error.what() << "\n"
-              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, frame, ida, "
+              << "Run 'brb --help' or 'brb <command> --help' (material, cyclic, solid, frame, ida, "
                  "validate, calibrate, spectrum, check, bench) for usage.\n";
     return kInvalidInput;
   }
@@ -78,6 +81,8 @@ int main(int argc, char** argv) {
       return brb::cli::run_material_command(material_command, std::cerr);
     if (cyclic->parsed())
       return brb::cli::run_cyclic_command(cyclic_command, std::cout, std::cerr);
+    if (solid->parsed())
+      return brb::cli::run_solid_command(solid_command, std::cout, std::cerr);
     if (frame->parsed())
       return brb::cli::run_frame_command(frame_command, std::cout, std::cerr);
     if (ida->parsed())

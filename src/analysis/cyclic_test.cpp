@@ -9,6 +9,29 @@
 
 namespace brb::analysis {
 
+void HysteresisAccumulator::append(const CyclicStep& step, bool cycle_ends,
+                                   std::span<const double> cycle_amplitude) {
+  CyclicTestResult& result = *result_;
+  const CyclicStep& previous = result.steps.back();
+  const double work =
+      0.5 * (step.force + previous.force) * (step.deformation - previous.deformation);
+  result.energy_total += work;
+  result.max_tension = std::max(result.max_tension, step.force);
+  result.max_compression = std::min(result.max_compression, step.force);
+  if (step.cycle != open_cycle_.index) {
+    open_cycle_ = CycleMetrics{};
+    open_cycle_.index = step.cycle;
+    if (step.cycle >= 1 && static_cast<std::size_t>(step.cycle) <= cycle_amplitude.size())
+      open_cycle_.amplitude = cycle_amplitude[step.cycle - 1];
+  }
+  open_cycle_.energy += work;
+  open_cycle_.max_tension = std::max(open_cycle_.max_tension, step.force);
+  open_cycle_.max_compression = std::min(open_cycle_.max_compression, step.force);
+  if (cycle_ends && step.cycle >= 1)
+    result.cycles.push_back(open_cycle_);
+  result.steps.push_back(step);
+}
+
 CyclicTest::CyclicTest(model::BraceModel& brace, NewtonSettings settings, bool record_history)
     : brace_(&brace), analysis_(brace.model, settings), tracker_(brace, brace.model),
       record_history_(record_history) {
@@ -63,7 +86,6 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
                     analysis_.control_force(),
                     tracker_.max_lateral_displacement(position),
                     report.substeps};
-    const CyclicStep& previous = result_.steps.back();
     tracker_.observe(position, step.deformation, step.force);
     if (record_history_) {
       const EnergyBalance& energy = analysis_.energy();
@@ -71,26 +93,8 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
                                  energy.dissipated + energy.released_in_jumps,
                                  tracker_.indicators()});
     }
-    const double work =
-        0.5 * (step.force + previous.force) * (step.deformation - previous.deformation);
-    result_.energy_total += work;
-    result_.max_tension = std::max(result_.max_tension, step.force);
-    result_.max_compression = std::min(result_.max_compression, step.force);
-
-    if (step.cycle != current_.index) {
-      current_ = CycleMetrics{};
-      current_.index = step.cycle;
-      if (step.cycle >= 1 && static_cast<std::size_t>(step.cycle) <= cycle_amplitude.size()) {
-        current_.amplitude = cycle_amplitude[step.cycle - 1];
-      }
-    }
-    current_.energy += work;
-    current_.max_tension = std::max(current_.max_tension, step.force);
-    current_.max_compression = std::min(current_.max_compression, step.force);
     const bool cycle_ends = k + 1 == deformation.size() || cycle[k + 1] != step.cycle;
-    if (cycle_ends && step.cycle >= 1)
-      result_.cycles.push_back(current_);
-    result_.steps.push_back(step);
+    hysteresis_.append(step, cycle_ends, cycle_amplitude);
   }
   return true;
 }

@@ -44,8 +44,8 @@ double core_first_axial_period(const model::BraceSpec& brace, const model::Solid
 
 SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
                               const std::vector<double>& deformations,
-                              const SolidBraceRunSettings& settings,
-                              const ContactFactory& contact) {
+                              const SolidBraceRunSettings& settings, const ContactFactory& contact,
+                              const SolidBraceObserver& observer) {
   if (deformations.empty())
     throw std::invalid_argument("solid brace run: the protocol has no deformation");
   for (double d : deformations)
@@ -136,8 +136,10 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
   run.time_step = solver.time_step();
   run.nodes = body.node_count();
   run.elements = body.element_count();
-  const auto record = [&] {
+  const auto record = [&](int point) {
     SolidBraceRecord r;
+    r.point = point;
+    r.steps = solver.steps();
     r.time = solver.time();
     r.deformation = solver.displacement()[3 * mesh.loaded_end.front()] / drive;
     for (int node : mesh.loaded_end)
@@ -151,8 +153,10 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     r.external = e.external;
     r.energy_error = e.relative_error();
     run.records.push_back(r);
+    if (observer)
+      observer(SolidBraceState{body, mesh, solver.displacement(), run.records.back()});
   };
-  record();
+  record(0);
   for (std::size_t i = 0; i < protocol.durations.size(); ++i) {
     for (int k = 1; k <= settings.outputs_per_segment; ++k) {
       const double t =
@@ -161,7 +165,7 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
         run.steps = solver.steps();
         return run;
       }
-      record();
+      record(static_cast<int>(i) + 1);
     }
   }
   run.steps = solver.steps();

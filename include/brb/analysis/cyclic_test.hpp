@@ -63,6 +63,24 @@ struct CyclicTestResult {
   std::vector<ElementHistoryPoint> history; ///< one per step, when asked for
 };
 
+/// Folds converged steps into a CyclicTestResult's hysteresis: the step list, the work of the
+/// force (trapezoidal in the deformation), the peak forces and the metrics of each completed
+/// cycle (loop energy and peaks). One rule for the fiber brace (CyclicTest) and the 3D
+/// continuum model (`brb solid`), so both report cycles the same way.
+class HysteresisAccumulator {
+public:
+  /// `result` must hold the initial point as its first step and outlive the accumulator.
+  explicit HysteresisAccumulator(CyclicTestResult& result) : result_(&result) {}
+
+  /// Appends `step` after the last one. `cycle_ends`: it is the last point of its cycle (the
+  /// cycle then counts as completed); `cycle_amplitude[c-1]`: the amplitude of cycle c.
+  void append(const CyclicStep& step, bool cycle_ends, std::span<const double> cycle_amplitude);
+
+private:
+  CyclicTestResult* result_;
+  CycleMetrics open_cycle_;
+};
+
 /// A cyclic test that can be continued: each follow() drives the brace on from where the
 /// last one stopped, so a caller can decide the next cycles from the response so far (the
 /// AISC 341 K3.4c sequence adds cycles at 1.5 Delta_bm until the cumulative inelastic
@@ -97,8 +115,8 @@ private:
   BraceIndicatorTracker tracker_;
   bool record_history_ = false;
   std::optional<std::pair<int, int>> yielding_ends_; ///< for the mean core strain
-  CycleMetrics current_;
   CyclicTestResult result_;
+  HysteresisAccumulator hysteresis_{result_};
 };
 
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per

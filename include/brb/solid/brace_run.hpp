@@ -56,6 +56,9 @@ struct SolidBraceRunSettings {
 
 /// One output step.
 struct SolidBraceRecord {
+  /// The protocol point the record's segment leads to (1-based; 0: the initial state).
+  int point = 0;
+  long steps = 0;                                        ///< explicit steps up to the record
   double time = 0.0;                                     ///< s
   double deformation = 0.0;                              ///< brace elongation (mm)
   double force = 0.0;                                    ///< axial force, tension positive (N)
@@ -77,6 +80,19 @@ struct SolidBraceRun {
   double time_per_deformation = 0.0; ///< s/mm used
 };
 
+class SolidBody;
+
+/// The state of the run at an output step, for recorders (field snapshots, indicators): the
+/// body (parts, interactions and their committed states), its mesh, the global displacement
+/// vector (mm) and the record just made.
+struct SolidBraceState {
+  const SolidBody& body;
+  const BraceMesh& mesh;
+  const Eigen::VectorXd& displacement;
+  const SolidBraceRecord& record;
+};
+using SolidBraceObserver = std::function<void(const SolidBraceState&)>;
+
 /// The first axial period T_1 = 4 L / sqrt(E / rho) of the isolated core (header).
 double core_first_axial_period(const model::BraceSpec& brace, const model::SolidMeshSpec& solid);
 
@@ -87,6 +103,7 @@ double core_first_axial_period(const model::BraceSpec& brace, const model::Solid
 SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
                               const std::vector<double>& deformations,
                               const SolidBraceRunSettings& settings = {},
-                              const ContactFactory& contact = nullptr);
+                              const ContactFactory& contact = nullptr,
+                              const SolidBraceObserver& observer = nullptr);
 
 } // namespace brb::solid

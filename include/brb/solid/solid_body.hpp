@@ -40,6 +40,8 @@ public:
   virtual const std::string& name() const = 0;
   /// The part's global node of each local node.
   virtual const std::vector<int>& global_nodes() const = 0;
+  /// The part's mesh (local node numbers).
+  virtual const HexMesh& mesh() const = 0;
   /// Gathers the part's displacements from the global vector, evaluates its elements and adds
   /// their internal forces to the global `force`. False, with `reason`, when an element
   /// inverts or its stress is not finite.
@@ -71,6 +73,7 @@ public:
 
   const std::string& name() const override { return name_; }
   const std::vector<int>& global_nodes() const override { return global_nodes_; }
+  const HexMesh& mesh() const override { return model_.mesh(); }
   SolidModel<Law>& model() { return model_; }
   const SolidModel<Law>& model() const { return model_; }
 
