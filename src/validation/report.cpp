@@ -137,6 +137,16 @@ void write_specimen(std::ostringstream& out, const SpecimenOutcome& outcome,
   out << "## " << specimen.id << ": " << specimen.title << "\n\n";
   out << "Source: " << specimen.source << ". Model: dy = " << significant(outcome.yield_deformation)
       << " mm, Py = " << significant(outcome.yield_force) << " N.\n\n";
+  if (specimen.record) {
+    const RecordReference& reference = *specimen.record;
+    out << "Compared with: " << to_string(reference.type) << " `" << reference.written << "`";
+    if (reference.failure) {
+      out << "; it states failure " << to_string(reference.failure->mode);
+      if (reference.failure->mode != FailureMode::none)
+        out << " in cycle " << reference.failure->cycle;
+    }
+    out << ".\n\n";
+  }
   if (!specimen.notes.empty()) {
     out << "Assumptions and notes:\n\n";
     for (const std::string& note : specimen.notes)
@@ -174,6 +184,24 @@ std::string relation_words(const std::string& relation) {
 
 Json optional_number(const std::optional<double>& value) {
   return value ? Json(*value) : Json(nullptr);
+}
+
+/// The specimen's reference: type, file or directory as written, stated failure (null
+/// without a reference).
+Json reference_json(const Specimen& specimen) {
+  if (!specimen.record)
+    return nullptr;
+  const RecordReference& reference = *specimen.record;
+  Json failure = nullptr;
+  if (reference.failure) {
+    failure = Json{{"failure_mode", std::string(to_string(reference.failure->mode))},
+                   {"cycle", reference.failure->mode == FailureMode::none
+                                 ? Json(nullptr)
+                                 : Json(reference.failure->cycle)}};
+  }
+  return Json{{"type", to_string(reference.type)},
+              {"source", reference.written},
+              {"failure", std::move(failure)}};
 }
 
 Json check_json(const CheckResult& check) {
@@ -311,6 +339,7 @@ Json report_json(const ValidationReport& report) {
                              {"yield_deformation", outcome.yield_deformation},
                              {"yield_force", outcome.yield_force},
                              {"notes", specimen.notes},
+                             {"reference", reference_json(specimen)},
                              {"runs", std::move(runs)}});
   }
   json["specimens"] = std::move(specimens);

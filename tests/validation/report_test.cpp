@@ -140,6 +140,28 @@ TEST(Report, JsonCarriesEveryValueAtFullPrecision) {
   EXPECT_EQ(energy.at("tolerance").at("relative"), 0.05);
   EXPECT_EQ(energy.at("status"), "fail");
   EXPECT_EQ(json.at("contrasts").at(0).at("status"), "pass");
+  EXPECT_TRUE(json.at("specimens").at(0).at("reference").is_null());
+}
+
+TEST(Report, NamesTheReferenceItsTypeAndItsStatedFailure) {
+  ValidationReport report = two_specimens();
+  brb::validation::RecordReference reference;
+  reference.type = brb::validation::ReferenceType::solver_csv;
+  reference.written = "abaqus/D3.csv";
+  reference.failure =
+      brb::validation::FailureEvent{brb::validation::FailureMode::casing_failure, 3};
+  report.specimens.at(1).specimen.record = reference;
+  const auto json = brb::validation::report_json(report);
+  const auto& written = json.at("specimens").at(1).at("reference");
+  EXPECT_EQ(written.at("type"), "solver_csv");
+  EXPECT_EQ(written.at("source"), "abaqus/D3.csv");
+  EXPECT_EQ(written.at("failure").at("failure_mode"), "casing_failure");
+  EXPECT_EQ(written.at("failure").at("cycle"), 3);
+  const std::string markdown = brb::validation::report_markdown(report);
+  EXPECT_NE(markdown.find("Compared with: solver_csv `abaqus/D3.csv`; it states failure "
+                          "casing_failure in cycle 3."),
+            std::string::npos)
+      << markdown;
 }
 
 } // namespace
