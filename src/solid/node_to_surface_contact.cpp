@@ -182,6 +182,21 @@ void NodeToSurfaceContact::update_buckets(Pass& pass, const Configuration& confi
   ++statistics_.bucket_builds;
 }
 
+namespace {
+
+/// A projection just beyond a face's edge with a penetration deeper than half the face's
+/// smaller half-size (|dx/dxi|, |dx/deta|) is a node beside a convex edge of the master body
+/// (e.g. a casing node at the mouth once the core has slid out from under it: beside the core's
+/// side face, 'penetrating' it by the core's half-width), not a node under a valley crease,
+/// whose band is as deep as penalty penetrations are (a small fraction of a face).
+bool beside_convex_edge(const QuadProjection& projection) {
+  const double half_size =
+      std::min(projection.point.tangents.col(0).norm(), projection.point.tangents.col(1).norm());
+  return projection.gap < -0.5 * half_size;
+}
+
+} // namespace
+
 NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
                                                              const Configuration& configuration,
                                                              const Eigen::Vector3d& point,
@@ -209,7 +224,8 @@ NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
     if (projection.inside && distance < inside_distance) {
       inside_distance = distance;
       inside = {f, projection};
-    } else if (!projection.inside && distance < near_edge_distance) {
+    } else if (!projection.inside && distance < near_edge_distance &&
+               !beside_convex_edge(projection)) {
       near_edge_distance = distance;
       near_edge = {f, projection};
     }

@@ -291,6 +291,24 @@ TEST(NodeToSurfaceContact, APenetratingNodeUnderAValleyCreaseIsNotLost) {
   }
 }
 
+TEST(NodeToSurfaceContact, ANodeBesideAConvexEdgeIsNotInContact) {
+  // The master face z = 0 (x in [0, 10], y in [0, 4], normal +z) is the top of a body below
+  // it. Slave nodes at y = 4.05, 3 mm below its plane, lie beside the body's edge y = 4 (0.025
+  // beyond it in natural coordinates, within the edge tolerance), not inside it: a casing
+  // node at the mouth once the core has slid out from under it. Theory: open, no force (the
+  // extension would report a penetration of 3 mm).
+  Eigen::Matrix3Xd nodes(3, 8);
+  nodes << 0, 10, 10, 0, 5, 6, 6, 5,      //
+      0, 0, 4, 4, 4.05, 4.05, 4.05, 4.05, //
+      0, 0, 0, 0, -3, -3, -4, -4;
+  const std::vector<QuadFace> master{{0, 1, 2, 3}};
+  const std::vector<QuadFace> slave{{4, 5, 6, 7}};
+  NodeToSurfaceContact contact(nodes, slave, master, settings_with(1000.0, 1, 0.1, 10.0));
+  const Eigen::VectorXd force = force_at(contact, Eigen::VectorXd::Zero(24));
+  EXPECT_EQ(contact.statistics().nodes_in_contact, 0);
+  EXPECT_EQ(force.norm(), 0.0);
+}
+
 TEST(NodeToSurfaceContact, RigidRotationOfEverythingRotatesTheForces) {
   // Objectivity: the same history (press, slide along a diagonal into slip, back into stick)
   // on the warped pair and on the pair rotated by R: forces R f, same energies.
