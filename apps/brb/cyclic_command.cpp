@@ -163,6 +163,20 @@ model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesyste
   }
 }
 
+void add_max_step_option(CLI::App& command, std::optional<double>& max_step,
+                         const std::string& description) {
+  command
+      .add_option_function<double>(
+          "--max-step",
+          [&max_step](const double& value) {
+            if (!(std::isfinite(value) && value > 0.0))
+              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
+            max_step = value;
+          },
+          description)
+      ->type_name("MM");
+}
+
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
   auto* cyclic = app.add_subcommand(
       "cyclic", "Virtual cyclic test: drive a brace's axial deformation through a loading "
@@ -184,17 +198,9 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
                    "hysteresis.csv and summary.json")
       ->type_name("DIR")
       ->required();
-  cyclic
-      ->add_option_function<double>(
-          "--max-step",
-          [&command](const double& max_step) {
-            if (!(std::isfinite(max_step) && max_step > 0.0))
-              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
-            command.max_step = max_step;
-          },
-          "Largest change of deformation per step, mm, when the protocol gives no max_step "
-          "(always for .csv histories); default dy / 10")
-      ->type_name("MM");
+  add_max_step_option(*cyclic, command.max_step,
+                      "Largest change of deformation per step, mm, when the protocol gives no "
+                      "max_step (always for .csv histories); default dy / 10");
   cyclic
       ->add_option_function<double>(
           "--energy-tolerance",

@@ -36,6 +36,11 @@ std::string brace_name(const model::BraceSpec& spec, const std::filesystem::path
 /// from it, so the 3D and the reduced model follow the same protocol points.
 model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesystem::path& file);
 
+/// Adds `--max-step MM` (a finite number of mm > 0, stored into `max_step`) to a command that
+/// reads a loading protocol.
+void add_max_step_option(CLI::App& command, std::optional<double>& max_step,
+                         const std::string& description);
+
 /// Registers the sub-command and its options (stored into `command` when parsed).
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command);
 

@@ -134,17 +134,9 @@ CLI::App* add_solid_command(CLI::App& app, SolidCommand& command) {
                    "Output directory (created if missing; its parent must exist)")
       ->type_name("DIR")
       ->required();
-  solid
-      ->add_option_function<double>(
-          "--max-step",
-          [&command](const double& max_step) {
-            if (!(std::isfinite(max_step) && max_step > 0.0))
-              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
-            command.max_step = max_step;
-          },
-          "Largest change of deformation between protocol points, mm, when the protocol "
-          "gives none; default dy / 10 (the points of brb cyclic)")
-      ->type_name("MM");
+  add_max_step_option(*solid, command.max_step,
+                      "Largest change of deformation between protocol points, mm, when the "
+                      "protocol gives none; default dy / 10 (the points of brb cyclic)");
   solid
       ->add_option("--outputs-per-step", command.outputs_per_step,
                    "Output records per protocol step (default 1)")

@@ -16,6 +16,7 @@
 //        f_a += -k_T (d . n) [sum_alpha N_a,alpha c_alpha - N_a sum_alpha w_alpha t_alpha
 //                             + g (sum_alpha w_alpha N_a,alpha) n]
 #include "brb/solid/node_to_surface_contact.hpp"
+#include "brb/solid/parallel_blocks.hpp"
 
 #include "brb/material/parameter_error.hpp"
 
@@ -390,16 +391,7 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
       for (std::size_t i = begin; i < end; ++i)
         contact_of_node(pass, i, configuration);
     };
-    const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(threads_), n);
-    if (threads <= 1) {
-      block(0, n);
-    } else {
-      std::vector<std::jthread> pool;
-      pool.reserve(threads - 1);
-      for (std::size_t t = 1; t < threads; ++t)
-        pool.emplace_back(block, n * t / threads, n * (t + 1) / threads);
-      block(0, n / threads);
-    } // the pool joins here
+    parallel_blocks(n, threads_, block);
     // in node order: the first failure, the forces and the counts (the same for any threads)
     for (std::size_t i = 0; i < n; ++i) {
       const NodeRecord& record = pass.records[i];

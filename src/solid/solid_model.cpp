@@ -1,4 +1,5 @@
 #include "brb/solid/solid_model.hpp"
+#include "brb/solid/parallel_blocks.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
 #include "brb/material/mortar_damage.hpp"
@@ -136,16 +137,7 @@ bool SolidModel<Law>::evaluate(const Eigen::VectorXd& displacement, Eigen::Vecto
     for (std::size_t e = begin; e < end; ++e)
       element_failed_[e] = evaluate_element(e, u, with_tangent) ? 0 : 1;
   };
-  const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(threads_), n);
-  if (threads <= 1) {
-    block(0, n);
-  } else {
-    std::vector<std::jthread> pool;
-    pool.reserve(threads - 1);
-    for (std::size_t t = 1; t < threads; ++t)
-      pool.emplace_back(block, n * t / threads, n * (t + 1) / threads);
-    block(0, n / threads);
-  } // the pool joins here
+  parallel_blocks(n, threads_, block);
 
   // the first failed element, in element order (the same for every thread count)
   for (std::size_t e = 0; e < n; ++e) {

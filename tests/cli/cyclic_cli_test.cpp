@@ -2,6 +2,7 @@
 // a short, stocky plate core (a few elements) so that each run takes a fraction of a second.
 #include "cli/run_brb.hpp"
 #include "io/scratch_directory.hpp"
+#include "support/kinematic_bar.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -64,27 +65,12 @@ json test_brace(bool straight = false) {
   return brace;
 }
 
-/// Axial force of a straight bar of the test brace at each deformation of a history: uniform
-/// strain delta / L through the closed-form uniaxial law of linear kinematic hardening
-/// (elastic predictor, radial return onto |sigma - alpha| = fy, d(alpha) = H d(eps_p)).
+/// The bar's force under uniform strain through the closed-form uniaxial law of linear
+/// kinematic hardening (tests/support/kinematic_bar.hpp).
 std::vector<double> uniaxial_bar_forces(const std::vector<double>& deformations) {
-  std::vector<double> forces;
-  double plastic_strain = 0.0;
-  double back_stress = 0.0;
-  for (const double deformation : deformations) {
-    const double strain = deformation / kCoreLength;
-    double stress = kYoungsModulus * (strain - plastic_strain);
-    const double overstress = std::abs(stress - back_stress) - kYieldStress;
-    if (overstress > 0.0) {
-      const double direction = stress > back_stress ? 1.0 : -1.0;
-      const double plastic_increment = overstress / (kYoungsModulus + kKinematicHardening);
-      plastic_strain += direction * plastic_increment;
-      back_stress += direction * kKinematicHardening * plastic_increment;
-      stress = kYoungsModulus * (strain - plastic_strain);
-    }
-    forces.push_back(stress * kPlateWidth * kPlateDepth);
-  }
-  return forces;
+  return brb::testing::KinematicBar{kYoungsModulus, kYieldStress, kKinematicHardening, kCoreLength,
+                                    kPlateWidth * kPlateDepth}
+      .forces(deformations);
 }
 
 /// Core only, no end zones: Py = fy A and dy = Py L / (E A) = fy L / E.
