@@ -19,7 +19,9 @@
 //   ramp (smooth_ramp: zero velocity at both ends) of duration time_per_deformation x |d_i -
 //   d_i-1|. Default time_per_deformation: 20 T_1 / d_y, with T_1 = 4 L / sqrt(E / rho) the first
 //   axial period of the isolated core clamped at one end and free at the other (L: the whole
-//   brace length, also in a half model, so both load at the same rate; rho: the scaled density) and
+//   brace length, also in a half model, so both load at the same rate; rho: the physical
+//   density, so that mass scaling s lengthens the stable step by sqrt(s) and shortens the run
+//   by as much, at inertia forces s times larger: watch KE / IE) and
 //   d_y = f_y L_y / E: a ramp of one yield deformation lasts twenty core periods (the source chose
 //   its loading periods from the core's modal periods, section 5; the 20-period ramp keeps KE < 5 %
 //   of IE in the quasi-static bar test of solid_explicit_test).
