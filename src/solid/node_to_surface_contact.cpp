@@ -255,9 +255,12 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
   const double gap = hit.projection.gap; // (C1)
   if (gap < -0.5 * settings_.search_distance) {
     std::ostringstream message;
-    message << "node-to-surface contact: node " << slave << " penetrates master face " << hit.face
-            << " by " << -gap << " mm, more than half the search distance ("
-            << settings_.search_distance << " mm): the penalty is too soft or the step too large";
+    message << "node-to-surface contact: node " << slave << " at (" << x_s.x() << ", " << x_s.y()
+            << ", " << x_s.z() << ") penetrates master face " << hit.face << " by " << -gap
+            << " mm (natural coordinates " << contact.natural.x() << ", " << contact.natural.y()
+            << (hit.projection.inside ? ", inside the face" : ", beyond its edge")
+            << "), more than half the search distance (" << settings_.search_distance
+            << " mm): the penalty is too soft or the step too large";
     record.failed = true;
     record.reason = message.str();
     return;
