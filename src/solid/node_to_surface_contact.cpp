@@ -222,11 +222,16 @@ NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
     if (!projection.converged || projection.excess > kEdgeTolerance)
       continue;
     const double distance = std::abs(projection.gap);
+    // within the edge band (inside or just beyond an edge) and half a face deep: beside a
+    // convex edge, whichever side of the edge round-off puts it (a node under the core's
+    // bearing face lies on the plane of its side faces' edges: 'inside' a side face at its
+    // edge, a half-width deep)
+    if (projection.excess > -kEdgeTolerance && beside_convex_edge(projection))
+      continue;
     if (projection.inside && distance < inside_distance) {
       inside_distance = distance;
       inside = {f, projection};
-    } else if (!projection.inside && distance < near_edge_distance &&
-               !beside_convex_edge(projection)) {
+    } else if (!projection.inside && distance < near_edge_distance) {
       near_edge_distance = distance;
       near_edge = {f, projection};
     }

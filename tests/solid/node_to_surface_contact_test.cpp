@@ -309,6 +309,33 @@ TEST(NodeToSurfaceContact, ANodeBesideAConvexEdgeIsNotInContact) {
   EXPECT_EQ(force.norm(), 0.0);
 }
 
+TEST(NodeToSurfaceContact, ANodeUnderTheBearingFaceIsNotTakenBySideFaceAtItsEdge) {
+  // The master body's top face z = 0 (x in [0, 10], y in [0, 4], normal +z) and a side face
+  // y = 4 (x in [0, 20], z in [-1, 0], normal +y) whose edge lies in the top face's plane. A
+  // slave nodes 1e-8 mm beyond the top face's edge x = 10 (a round-off: not 'inside' it) and
+  // 0.001 mm under its plane also lies 'inside' the side face at its edge, 2 mm behind it, over
+  // half the side face's smaller half-size (0.5 mm) deep (the
+  // Girona D3 half model stopped on this: a mortar node on the core's corner). Theory: those two
+  // bear on the top face, N = k_N 0.001 along -z on each; the slave nodes 1 mm beyond the top
+  // face are beside the body's convex edge: open.
+  Eigen::Matrix3Xd nodes(3, 12);
+  nodes << 0, 10, 10, 0, 0, 20, 20, 0, 10 + 1e-8, 11, 11, 10 + 1e-8, //
+      0, 0, 4, 4, 4, 4, 4, 4, 2, 2, 3, 3,                            //
+      0, 0, 0, 0, 0, 0, -1, -1, -0.001, -0.001, -0.001, -0.001;
+  const std::vector<QuadFace> master{{0, 1, 2, 3}, {4, 5, 6, 7}};
+  const std::vector<QuadFace> slave{{8, 9, 10, 11}};
+  NodeToSurfaceContact contact(nodes, slave, master, settings_with(1000.0, 1, 0.1, 10.0));
+  const Eigen::VectorXd force = force_at(contact, Eigen::VectorXd::Zero(36));
+  EXPECT_EQ(contact.statistics().nodes_in_contact, 2);
+  const double k_N = 1000.0 * 0.25 * (1.0 - 1e-8); // a quarter of the slave face's area
+  for (int node : {8, 11}) {
+    EXPECT_NEAR(node_force(force, node).z(), -k_N * 0.001, 1e-12) << node;
+    EXPECT_NEAR(node_force(force, node).y(), 0.0, 1e-12) << node;
+  }
+  for (int node : {9, 10})
+    EXPECT_EQ(node_force(force, node).norm(), 0.0) << node;
+}
+
 TEST(NodeToSurfaceContact, RigidRotationOfEverythingRotatesTheForces) {
   // Objectivity: the same history (press, slide along a diagonal into slip, back into stick)
   // on the warped pair and on the pair rotated by R: forces R f, same energies.

@@ -33,9 +33,11 @@
 //    natural coordinates, 2.5 % of the face's size) is taken. This closes the dead zone of a
 //    valley crease between two faces, where a penetrating node's closest points on both
 //    faces' extensions lie outside both faces (a band of width ~ penetration x crease angle).
-//    Not when that penetration is deeper than half the face's smaller half-size: such a node
-//    lies beside a convex edge of the master body (a casing node at the mouth once the core has
-//    slid out from under it would otherwise 'penetrate' the core's side face by its half-width).
+//    Neither face is taken when the point lies within that band of an edge (inside or beyond)
+//    and deeper than half the face's smaller half-size: such a node lies beside a convex edge
+//    of the master body (a casing node at the mouth once the core has slid out from under it,
+//    or a casing node under the core's bearing face, which lies on the plane of the side faces'
+//    edges, would otherwise 'penetrate' a side face by the core's half-width).
 //  - Open (g >= 0 or no face): no force; the anchor is dropped (a new contact starts with
 //    T = 0, PenaltyFriction (F6)); the node's dissipated energy is kept.
 //
