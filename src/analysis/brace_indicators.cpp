@@ -6,9 +6,8 @@
 namespace brb::analysis {
 namespace {
 
-constexpr double kCrushedDamage = 0.9;       // a bearing face this damaged has crushed through
-constexpr double kGlobalBucklingRatio = 250; // lateral deflection beyond L_y / 250
-// ... and, over a step that shortens the brace, the bow grows by more than the shortening
+// Global buckling needs, beside a bow beyond L_y / kGlobalBucklingRatio, that over a step that
+// shortens the brace the bow grows by more than the shortening
 // while the brace stiffens by less than this fraction of its elastic axial stiffness
 // P_y / d_y: the shortening goes into the bow, not into the core
 constexpr double kGlobalBucklingStiffnessRatio = 0.5;

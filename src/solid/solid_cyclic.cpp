@@ -20,13 +20,6 @@ namespace {
 using Steel = material::SteelDamagePlasticity3D;
 using Mortar = material::MortarDamage3D;
 
-/// Damage at which a mortar element bounding the opening counts as crushed through (the
-/// reduced model's casing-failure rule, brace_indicators.hpp).
-constexpr double kCasingFailureDamage = 0.9;
-/// A casing bow beyond L_y / this (less the clearance) flags global buckling (the reduced
-/// model's limit, brace_indicators.hpp).
-constexpr double kGlobalBowDivisor = 250.0;
-
 const SolidPartOf<Steel>* steel_part(const SolidBody& body, const std::string& name) {
   for (const auto& part : body.parts())
     if (part->name() == name)
@@ -86,7 +79,7 @@ public:
       : yield_force_(yield_force), yield_deformation_(yield_deformation) {
     if (brace.casing) {
       const double clearance = std::max(brace.casing->gap_y, brace.casing->gap_z);
-      bow_limit_ = brace.yielding_length / kGlobalBowDivisor + clearance;
+      bow_limit_ = brace.yielding_length / analysis::kGlobalBucklingRatio + clearance;
       bearing_ = bearing_elements(mesh);
     }
     std::vector<char> core_node(static_cast<std::size_t>(mesh.nodes.cols()), 0);
@@ -122,7 +115,7 @@ public:
       for (const auto& element : states)
         ind.max_mortar_damage = std::max(ind.max_mortar_damage, element.damage);
       for (int e : bearing_)
-        if (states[static_cast<std::size_t>(e)].damage >= kCasingFailureDamage)
+        if (states[static_cast<std::size_t>(e)].damage >= analysis::kCrushedDamage)
           ind.casing_failure = true;
     }
     if (has_previous_)

@@ -40,6 +40,11 @@ struct BraceIndicators {
 
 /// Steel damage at which a core fiber counts as fractured (the core-fracture flag).
 inline constexpr double kFractureDamage = 0.9;
+/// Bearing damage at which the mortar under a station counts as crushed through (the
+/// casing-failure flag).
+inline constexpr double kCrushedDamage = 0.9;
+/// A lateral deflection beyond L_y / this (less the clearance) can flag global buckling.
+inline constexpr double kGlobalBucklingRatio = 250.0;
 
 /// The increment of the cumulative inelastic deformation (multiples of dy) over a step that
 /// changed the brace's deformation by d_deformation (mm) and its force by d_force (N):
