@@ -107,6 +107,7 @@ nlohmann::ordered_json solid_block(const SolidCommand& command, const model::Sol
   block["time_per_deformation_s_per_mm"] = run.time_per_deformation;
   block["duration_s"] = run.records.empty() ? 0.0 : run.records.back().time;
   block["contact_penalty_N_per_mm3"] = result.contact_penalty;
+  block["quasi_static_floor_N_mm"] = result.quasi_static_floor;
   block["max_kinetic_over_internal"] = result.max_kinetic_ratio;
   block["max_hourglass_over_internal"] = result.max_hourglass_ratio;
   block["max_energy_balance_error"] = result.max_energy_error;

@@ -384,10 +384,10 @@ model::ElementSpec read_element(const JsonValue& object) {
 /// The "solid" block: the 3D continuum mesh (solid/brace_mesh.hpp).
 model::SolidMeshSpec read_solid(const JsonValue& object) {
   object.expect_object({"elements_across_core", "axial_element_size", "elements_through_mortar",
-                        "half_length", "tube", "steel_density", "mortar_density", "mass_scaling",
-                        "threads"},
+                        "half_length", "tube", "end_faces", "steel_density", "mortar_density",
+                        "mass_scaling", "threads"},
                        "a solid object {elements_across_core, axial_element_size, "
-                       "elements_through_mortar, half_length, tube, steel_density, "
+                       "elements_through_mortar, half_length, tube, end_faces, steel_density, "
                        "mortar_density, mass_scaling, threads}");
   model::SolidMeshSpec solid;
   const auto count = [&](std::string_view key, std::string_view meaning, int& value) {
@@ -412,6 +412,12 @@ model::SolidMeshSpec read_solid(const JsonValue& object) {
     solid.tube = one_of<model::SolidTube>(
         *tube, "tube model",
         {{"elements", model::SolidTube::elements}, {"homogenised", model::SolidTube::homogenised}});
+  }
+  if (const auto ends = object.find("end_faces")) {
+    solid.end_faces =
+        one_of<model::SolidEndFaces>(*ends, "end faces' lateral support",
+                                     {{"centre_lines", model::SolidEndFaces::centre_lines},
+                                      {"clamped", model::SolidEndFaces::clamped}});
   }
   for (const auto& [key, value] : {std::pair{"steel_density", &solid.steel_density},
                                    std::pair{"mortar_density", &solid.mortar_density}}) {

@@ -9,7 +9,9 @@
 #include "brb/solid/solid_explicit.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <utility>
 
 namespace brb::solid {
 
@@ -33,6 +35,43 @@ struct Protocol {
     return targets.back();
   }
 };
+
+/// The lateral supports (node, direction 1 = y or 2 = z) of an end face of the core
+/// (model::SolidEndFaces). Centre lines: u_y held on the face's nodes nearest the line y = y_c
+/// (its centroid's), u_z on those nearest z = z_c: no sideways motion or twist, free Poisson
+/// strain (the nodes on a centre line do not move across it when the section contracts
+/// symmetrically). A face with an odd number of elements across has no node on the line, and
+/// the column nearest it is held.
+std::vector<std::pair<int, int>> lateral_supports(const Eigen::Matrix3Xd& nodes,
+                                                  const std::vector<int>& face,
+                                                  model::SolidEndFaces end_faces) {
+  std::vector<std::pair<int, int>> supports;
+  if (face.empty())
+    return supports;
+  if (end_faces == model::SolidEndFaces::clamped) {
+    for (int node : face)
+      for (int direction : {1, 2})
+        supports.emplace_back(node, direction);
+    return supports;
+  }
+  for (int direction : {1, 2}) {
+    double centre = 0.0, low = nodes(direction, face.front()), high = low;
+    for (int node : face) {
+      centre += nodes(direction, node);
+      low = std::min(low, nodes(direction, node));
+      high = std::max(high, nodes(direction, node));
+    }
+    centre /= static_cast<double>(face.size());
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int node : face)
+      nearest = std::min(nearest, std::abs(nodes(direction, node) - centre));
+    const double tolerance = nearest + 1e-9 * (high - low);
+    for (int node : face)
+      if (std::abs(nodes(direction, node) - centre) <= tolerance)
+        supports.emplace_back(node, direction);
+  }
+  return supports;
+}
 
 } // namespace
 
@@ -122,13 +161,12 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
   // supports and the driven face (its displacement: the brace elongation, halved in a half model)
   SolidLoading loading;
   const double drive = mesh.half_length ? 0.5 : 1.0;
-  for (int node : mesh.loaded_end) {
+  for (int node : mesh.loaded_end)
     loading.prescribed.add(node, 0, drive);
-    loading.prescribed.add(node, 1, 0.0);
-    loading.prescribed.add(node, 2, 0.0);
-  }
   for (int node : mesh.fixed_end)
-    for (int direction = 0; direction < 3; ++direction)
+    loading.prescribed.add(node, 0, 0.0);
+  for (const auto& face : {mesh.loaded_end, mesh.fixed_end})
+    for (const auto& [node, direction] : lateral_supports(mesh.nodes, face, solid.end_faces))
       loading.prescribed.add(node, direction, 0.0);
   for (int node : mesh.symmetry_plane)
     loading.prescribed.add(node, 0, 0.0);

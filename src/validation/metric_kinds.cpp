@@ -492,6 +492,33 @@ MetricValue evaluate_record_peak_force(const Json& metric, const RunData& run) {
       });
 }
 
+/// The worst scored excursion's value (excursions: segment_excursions; the half cycles of a
+/// protocol that closes no cycle), with a note.
+template <typename Worst> MetricValue record_excursion_value(const RunData& run, Worst worst) {
+  const RecordLookup lookup = compare_run_with_record(run);
+  if (!lookup.comparison)
+    return {std::nullopt, lookup.note};
+  const RecordComparison& comparison = *lookup.comparison;
+  if (comparison.scored_excursions == 0)
+    return {std::nullopt, lookup.note + ": no excursion scored"};
+  const double value = worst(comparison);
+  const std::string note =
+      lookup.note + ", " + std::to_string(comparison.scored_excursions) + " excursions";
+  if (!std::isfinite(value))
+    return {std::nullopt, note + ": a reference excursion has no peak in its direction"};
+  return {value, note};
+}
+
+MetricValue evaluate_record_excursion_work(const Json&, const RunData& run) {
+  return record_excursion_value(
+      run, [](const RecordComparison& c) { return c.max_excursion_work_error; });
+}
+
+MetricValue evaluate_record_excursion_peak(const Json&, const RunData& run) {
+  return record_excursion_value(
+      run, [](const RecordComparison& c) { return c.max_excursion_peak_error; });
+}
+
 /// Cycles the model's failure may be away from the reference's by default ("within one
 /// cycle", issue 6).
 constexpr int kDefaultFailureCycleTolerance = 1;
@@ -520,8 +547,8 @@ MetricValue evaluate_record_failure_mode(const Json& metric, const RunData& run)
                                              (tolerance == 1 ? "" : "s") + ")"};
 }
 
-const std::array<MetricKind, 13>& registry() {
-  static const std::array<MetricKind, 13> kinds{{
+const std::array<MetricKind, 15>& registry() {
+  static const std::array<MetricKind, 15> kinds{{
       {"cycle_energy",
        "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
        "(\"amplitude_dy\")",
@@ -601,6 +628,20 @@ const std::array<MetricKind, 13>& registry() {
        false,
        check_record_peak_force,
        evaluate_record_peak_force},
+      {"record_excursion_work",
+       "largest relative error of the work F d(delta) per scored excursion (reversal to "
+       "reversal, the first and last points counting as reversals) against the reference",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_excursion_work},
+      {"record_excursion_peak_force",
+       "largest relative error of the peak force per scored excursion, in the excursion's "
+       "direction (tension while elongating, compression while shortening)",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_excursion_peak},
       {"record_failure_mode",
        "1 when the model fails in the reference's failure mode within \"cycle_tolerance\" "
        "cycles (default 1) of the reference's cycle, or neither fails",

@@ -37,6 +37,29 @@ std::vector<CycleSpan> segment_cycles(std::span<const double> deformation,
   return cycles;
 }
 
+std::vector<CycleSpan> segment_excursions(std::span<const double> deformation,
+                                          double reversal_threshold) {
+  std::vector<std::size_t> turns{0};
+  for (std::size_t reversal : find_reversals(deformation, reversal_threshold))
+    turns.push_back(reversal);
+  if (!deformation.empty())
+    turns.push_back(deformation.size() - 1);
+  std::vector<CycleSpan> excursions;
+  for (std::size_t k = 0; k + 1 < turns.size(); ++k)
+    if (turns[k + 1] > turns[k])
+      excursions.push_back({turns[k], turns[k + 1]});
+  return excursions;
+}
+
+double excursion_peak(std::span<const double> deformation, std::span<const double> force,
+                      CycleSpan excursion) {
+  const bool elongating = deformation[excursion.last] >= deformation[excursion.first];
+  double peak = 0.0;
+  for (std::size_t i = excursion.first; i <= excursion.last; ++i)
+    peak = std::max(peak, elongating ? force[i] : -force[i]);
+  return peak;
+}
+
 double loop_energy(std::span<const double> deformation, std::span<const double> force,
                    CycleSpan cycle) {
   double energy = 0.0;
@@ -90,6 +113,14 @@ double CycleComparison::energy_error() const {
   return scored ? std::abs(model_energy - test_energy) / test_energy : 0.0;
 }
 
+double ExcursionComparison::work_error() const {
+  return scored ? std::abs(model_work - test_work) / std::abs(test_work) : 0.0;
+}
+
+double ExcursionComparison::peak_error() const {
+  return scored ? relative_peak_error(model_peak, test_peak) : 0.0;
+}
+
 double CycleComparison::beta_difference() const {
   return scored ? std::abs(model_beta - test_beta) : 0.0;
 }
@@ -134,6 +165,30 @@ RecordComparison compare_with_record(std::span<const double> deformation,
     const double beta = cycle.beta_difference();
     result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
                                                   : std::max(result.max_beta_difference, beta);
+  }
+
+  double largest_test_work = 0.0;
+  for (const CycleSpan& span : segment_excursions(deformation, options.reversal_threshold)) {
+    ExcursionComparison excursion;
+    excursion.span = span;
+    excursion.test_work = loop_energy(deformation, test_force, span);
+    excursion.model_work = loop_energy(deformation, model_force, span);
+    excursion.test_peak = excursion_peak(deformation, test_force, span);
+    excursion.model_peak = excursion_peak(deformation, model_force, span);
+    largest_test_work = std::max(largest_test_work, std::abs(excursion.test_work));
+    result.excursions.push_back(excursion);
+  }
+  const double work_floor = options.energy_floor_fraction * largest_test_work;
+  for (ExcursionComparison& excursion : result.excursions) {
+    excursion.scored =
+        std::abs(excursion.test_work) > 0.0 && std::abs(excursion.test_work) >= work_floor;
+    if (!excursion.scored)
+      continue;
+    ++result.scored_excursions;
+    result.max_excursion_work_error =
+        std::max(result.max_excursion_work_error, excursion.work_error());
+    result.max_excursion_peak_error =
+        std::max(result.max_excursion_peak_error, excursion.peak_error());
   }
   return result;
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -57,10 +58,9 @@ json bar_brace() {
 }
 
 /// Tension to 2.5 dy and elastic unloading to 1 dy in steps of dy / 2 (a CSV history, mm).
-/// Not further: the bar is clamped at both ends (grips), which hold its Poisson contraction
-/// there, so after yielding in tension the ends carry residual stresses that round the reverse
-/// yield (measured: 2.7 % of Py below the uniaxial law at 0.5 dy after a 2.5 dy peak, with two
-/// elements across); that is the 3D bar's response, not the law's.
+/// Not further: the quasi-static ramp's dynamics add up over longer histories (the clamped
+/// option's grips, which hold the Poisson strain at the ends, left residual stresses that
+/// rounded the reverse yield: 2.7 % of Py below the uniaxial law at 0.5 dy after a 2.5 dy peak).
 std::vector<double> tension_history() {
   std::vector<double> history;
   for (const double in_dy : {0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 2.0, 1.5, 1.0})
@@ -120,14 +120,19 @@ TEST(SolidCli, BareBarFollowsTheUniaxialLawAndWritesTheCyclicFiles) {
       EXPECT_GT(row[5], 0.0) << "explicit steps of the record: " << lines[i];
     }
   }
-  // The 3D steel law collapses exactly to the uniaxial one in uniaxial stress; the bar is
-  // clamped at both ends (grips), which restrains its Poisson contraction there and stiffens
-  // it: within 2 % of Py at every point.
+  // The 3D steel law collapses exactly to the uniaxial one in uniaxial stress, which the end
+  // faces held on their centre lines (the default) leave uniform along the bar: within 0.5 %
+  // of Py at every point (the quasi-static ramp's dynamics; the grips of the clamped option
+  // restrain the Poisson strain at the ends and were 2.7 % off after the reversal).
   const std::vector<double> expected = uniaxial_bar_forces(deformations);
   const double yield_force = kYieldStress * kPlateWidth * kPlateDepth;
-  for (std::size_t k = 0; k < forces.size(); ++k)
-    EXPECT_NEAR(forces[k], expected[k], 0.02 * yield_force)
+  double worst = 0.0;
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    EXPECT_NEAR(forces[k], expected[k], 0.005 * yield_force)
         << "point " << k << " at " << deformations[k] << " mm";
+    worst = std::max(worst, std::abs(forces[k] - expected[k]) / yield_force);
+  }
+  RecordProperty("worst_force_error_over_Py", std::to_string(worst));
 
   const json summary = json::parse(read_file(files.out / "summary.json"));
   EXPECT_TRUE(summary["completed"].get<bool>());
@@ -139,6 +144,14 @@ TEST(SolidCli, BareBarFollowsTheUniaxialLawAndWritesTheCyclicFiles) {
   EXPECT_LT(solid["max_kinetic_over_internal"].get<double>(), 0.05);
   EXPECT_LT(solid["max_energy_balance_error"].get<double>(), 1e-3);
   EXPECT_LT(solid["max_hourglass_over_internal"].get<double>(), 0.05);
+  // the ratios are judged above 1 % of the elastic energy at yield, P_y d_y / 2
+  EXPECT_NEAR(solid["quasi_static_floor_N_mm"].get<double>(),
+              0.01 * 0.5 * yield_force * summary["yield_deformation"].get<double>(),
+              1e-9 * yield_force);
+  // the final balance over the gross work (a scale that is never zero once loaded)
+  const json& balance = summary["energy_balance"];
+  EXPECT_GT(balance["gross_work"].get<double>(), 0.0);
+  EXPECT_LT(balance["relative_error"].get<double>(), 1e-3);
 
   const auto energy_lines = lines_of(read_file(files.out / "energies.csv"));
   EXPECT_EQ(energy_lines.front(), "step,time,explicit_steps,deformation,force,kinetic,internal,"

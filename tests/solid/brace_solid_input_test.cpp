@@ -50,6 +50,7 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
                                                          {"elements_through_mortar", 4},
                                                          {"half_length", true},
                                                          {"tube", "homogenised"},
+                                                         {"end_faces", "clamped"},
                                                          {"steel_density", 7.8e-9},
                                                          {"mortar_density", 2.4e-9},
                                                          {"mass_scaling", 4.0},
@@ -62,6 +63,7 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
   EXPECT_EQ(spec.solid->elements_through_mortar, 4);
   EXPECT_TRUE(spec.solid->half_length);
   EXPECT_EQ(spec.solid->tube, model::SolidTube::homogenised);
+  EXPECT_EQ(spec.solid->end_faces, model::SolidEndFaces::clamped);
   EXPECT_EQ(spec.solid->steel_density, 7.8e-9);
   EXPECT_EQ(spec.solid->mortar_density, 2.4e-9);
   EXPECT_EQ(spec.solid->mass_scaling, 4.0);
@@ -72,6 +74,7 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
   EXPECT_EQ(defaults.solid->steel_density, 7.85e-9);
   EXPECT_EQ(defaults.solid->mortar_density, 2.35e-9);
   EXPECT_EQ(defaults.solid->tube, model::SolidTube::elements);
+  EXPECT_EQ(defaults.solid->end_faces, model::SolidEndFaces::centre_lines);
   EXPECT_FALSE(parse_brace(cased_brace(json::object()).dump(), "b").solid->half_length);
 }
 
@@ -91,6 +94,8 @@ TEST(BraceSolidInput, ReportsEachBadMeshInput) {
   EXPECT_NE(message.find("aspect ratio"), std::string::npos) << message;
   EXPECT_EQ(error_location(cased_brace({{"tube", "shell"}})), "/solid/tube");
   EXPECT_EQ(error_location(cased_brace({{"half_length", 1}})), "/solid/half_length");
+  EXPECT_EQ(error_location(cased_brace({{"end_faces", "grips"}}), &message), "/solid/end_faces");
+  EXPECT_NE(message.find("centre_lines"), std::string::npos) << message;
   EXPECT_EQ(error_location(cased_brace({{"mass_scaling", 0.5}})), "/solid/mass_scaling");
   EXPECT_EQ(error_location(cased_brace({{"elements", 3}})), "/solid/elements");
 

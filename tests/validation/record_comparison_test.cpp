@@ -122,5 +122,68 @@ TEST(RecordComparison, NearlyElasticCyclesBelowTheEnergyFloorAreNotScored) {
   EXPECT_EQ(comparison.max_cycle_energy_error, 0.0);
 }
 
+TEST(RecordComparison, ExcursionsOfAHalfCycleProtocolAreScoredWithoutAClosedCycle) {
+  // The source's small-BRB case 1: shortening to -A, then elongating to +B, which closes no
+  // cycle. Elastic-perfectly-plastic spring (K, Fy); corners as points, so the trapezoidal
+  // rule is exact. Hand computed:
+  //  - excursion 1 (0 -> -A): work Fy (A - Fy / K) + Fy^2 / (2 K) = Fy (A - Fy / (2 K)),
+  //    peak compression Fy;
+  //  - excursion 2 (-A -> +B): unloading -Fy^2 / (2 K), reloading +Fy^2 / (2 K), then
+  //    plastic Fy (B - (-A + 2 Fy / K)): work Fy (A + B - 2 Fy / K), peak tension Fy.
+  const double stiffness = 100.0, fy = 10.0, a = 1.0, b = 0.5;
+  Loops path;
+  path.add(0.0, 0.0);
+  path.add(-fy / stiffness, -fy);
+  path.add(-a, -fy);
+  path.add(-a + fy / stiffness, 0.0);
+  path.add(-a + 2 * fy / stiffness, fy);
+  path.add(b, fy);
+  EXPECT_TRUE(segment_cycles(path.deformation, 0.05).empty());
+  const std::vector<CycleSpan> excursions = segment_excursions(path.deformation, 0.05);
+  ASSERT_EQ(excursions.size(), 2u);
+  EXPECT_EQ(excursions[0].first, 0u);
+  EXPECT_EQ(excursions[0].last, 2u);
+  EXPECT_EQ(excursions[1].first, 2u);
+  EXPECT_EQ(excursions[1].last, 5u);
+  EXPECT_NEAR(loop_energy(path.deformation, path.force, excursions[0]),
+              fy * (a - fy / (2 * stiffness)), 1e-12);
+  EXPECT_NEAR(loop_energy(path.deformation, path.force, excursions[1]),
+              fy * (a + b - 2 * fy / stiffness), 1e-12);
+  EXPECT_EQ(excursion_peak(path.deformation, path.force, excursions[0]), fy); // compression
+  EXPECT_EQ(excursion_peak(path.deformation, path.force, excursions[1]), fy); // tension
+
+  // A model 10 % stronger in compression only: excursion 1's work and peak are 10 % off;
+  // excursion 2's peak (tension) is not, its work changes by the unloading branch's part.
+  std::vector<double> model = path.force;
+  for (double& f : model)
+    f = f < 0.0 ? 1.1 * f : f;
+  const RecordComparison comparison =
+      compare_with_record(path.deformation, path.force, model, {0.05, 0.05});
+  EXPECT_EQ(comparison.scored_cycles, 0u);
+  ASSERT_EQ(comparison.excursions.size(), 2u);
+  EXPECT_EQ(comparison.scored_excursions, 2u);
+  EXPECT_NEAR(comparison.excursions[0].work_error(), 0.1, 1e-12);
+  EXPECT_NEAR(comparison.excursions[0].peak_error(), 0.1, 1e-12);
+  EXPECT_NEAR(comparison.excursions[1].peak_error(), 0.0, 1e-12);
+  // excursion 2 of the model: the unloading half-triangle from -1.1 Fy to 0 spans the same
+  // deformation, so its area is 1.1 x -Fy^2 / (2 K)
+  const double test_work = fy * (a + b - 2 * fy / stiffness);
+  const double model_work = test_work - 0.1 * fy * fy / (2 * stiffness);
+  EXPECT_NEAR(comparison.excursions[1].model_work, model_work, 1e-12);
+  EXPECT_NEAR(comparison.max_excursion_work_error, 0.1, 1e-12);
+  EXPECT_NEAR(comparison.max_excursion_peak_error, 0.1, 1e-12);
+}
+
+TEST(RecordComparison, AMonotonicHistoryIsOneExcursion) {
+  // 0 -> A in tension (the source's case 2): one excursion from the first to the last point.
+  const std::vector<double> deformation{0.0, 0.1, 0.5, 1.0};
+  const std::vector<double> force{0.0, 10.0, 10.0, 10.0};
+  const std::vector<CycleSpan> excursions = segment_excursions(deformation, 0.05);
+  ASSERT_EQ(excursions.size(), 1u);
+  EXPECT_EQ(excursions[0].first, 0u);
+  EXPECT_EQ(excursions[0].last, 3u);
+  EXPECT_TRUE(segment_excursions(std::vector<double>{0.0}, 0.05).empty());
+}
+
 } // namespace
 } // namespace brb::validation

@@ -217,6 +217,11 @@ json every_metric(double tolerance) {
                      {"compared_cycle", 2},
                      {"reference", 0.0},
                      {"tolerance", {{"absolute", tolerance}}}});
+  for (const char* kind : {"record_excursion_work", "record_excursion_peak_force"})
+    metrics.push_back({{"name", kind},
+                       {"kind", kind},
+                       {"reference", 0.0},
+                       {"tolerance", {{"absolute", tolerance}}}});
   metrics.push_back({{"name", "failure"}, {"kind", "record_failure_mode"}, {"expected", true}});
   return metrics;
 }
@@ -237,7 +242,7 @@ TEST_F(ReferenceTypes, SolidRunOfTheSameHistoryGivesZeroErrorForEveryMetric) {
                           {"directory", "../solid_same"},
                           {"failure", failure_of(model_failure())}};
   const auto checks = metric_checks(write_specimen("same_solid", reference, every_metric(0.0)));
-  ASSERT_EQ(checks.size(), 7u);
+  ASSERT_EQ(checks.size(), 9u);
   for (const CheckResult& check : checks) {
     EXPECT_EQ(check.status, CheckStatus::pass) << check.name << ": " << check.note;
     ASSERT_TRUE(check.value) << check.name << ": " << check.note;
@@ -257,7 +262,7 @@ TEST_F(ReferenceTypes, SolverCsvInKilonewtonsAndInchesGivesZeroErrorForEveryMetr
   json reference = solver_reference("solver_same.csv");
   reference["failure"] = failure_of(model_failure());
   const auto checks = metric_checks(write_specimen("same_solver", reference, every_metric(1e-12)));
-  ASSERT_EQ(checks.size(), 7u);
+  ASSERT_EQ(checks.size(), 9u);
   for (const CheckResult& check : checks) {
     EXPECT_EQ(check.status, CheckStatus::pass) << check.name << ": " << check.note;
     ASSERT_TRUE(check.value) << check.name << ": " << check.note;

@@ -125,6 +125,13 @@ struct ElementSpec {
 /// (BRB_SOURCE_FACTS section 7).
 enum class SolidTube { elements, homogenised };
 
+/// How the 3D model holds the core's end faces sideways. centre_lines: u_y on the face's
+/// nodes on its centre line along z, u_z on those on its centre line along y, so the face
+/// neither moves sideways nor twists but its section contracts and expands freely (the
+/// uniaxial stress of the fiber model up to the end); clamped: every node's u_y and u_z (the
+/// grips of a test machine, which restrain the Poisson strain there and stiffen a stubby core).
+enum class SolidEndFaces { centre_lines, clamped };
+
 /// The `solid` block of a brace file: the 3D continuum mesh of the brace (issue 6;
 /// solid/brace_mesh.hpp states the geometry). Defaults as listed.
 struct SolidMeshSpec {
@@ -134,6 +141,7 @@ struct SolidMeshSpec {
   int elements_through_mortar = 2; ///< through the mortar's thickness (>= 2)
   bool half_length = false;        ///< mid-length to the driven end, symmetry plane at mid-length
   SolidTube tube = SolidTube::elements;
+  SolidEndFaces end_faces = SolidEndFaces::centre_lines;
   double steel_density = 7.85e-9;  ///< tonne/mm^3 (the source's 7850 kg/m^3)
   double mortar_density = 2.35e-9; ///< tonne/mm^3 (the source's 2350 kg/m^3)
   double mass_scaling = 1.0;       ///< factor on both densities (>= 1: a longer stable step)

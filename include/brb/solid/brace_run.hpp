@@ -9,12 +9,16 @@
 //   material::MortarDamage3D(casing.mortar), tube SteelDamagePlasticity3D(casing.tube_steel);
 //   the characteristic length of each element is V^(1/3) (SolidModel). Densities of the solid
 //   block times its mass scaling.
-// - Supports: full length: the start face (core, x = 0) is clamped (u = 0) and the driven face
-//   (core, x = L) follows u_x = d(t), u_y = u_z = 0 (the grips of a test machine); the casing
-//   is held only by the stopper tie and the contact. Half length (the source's half model,
-//   BRB_SOURCE_FACTS section 7): u_x = 0 on the symmetry plane (core, mortar, tube at
-//   mid-length), the driven face follows u_x = d(t) / 2, u_y = u_z = 0; the brace elongation
-//   reported is twice the driven face's displacement.
+// - Supports: full length: the start face (core, x = 0) has u_x = 0 and the driven face
+//   (core, x = L) follows u_x = d(t); sideways both are held as the solid block's `end_faces`
+//   says (model::SolidEndFaces): by default on their centre lines only (no sideways motion or
+//   twist, the section's Poisson strain free, as in the fiber model's uniaxial stress), or
+//   clamped (u_y = u_z = 0 on every node: the grips of a test machine, which stiffen a stubby
+//   core: the small BRB of the source, 100 mm long and 10 mm wide, by 13 % at 15 d_y with two
+//   elements across). The casing is held only by the stopper tie and the contact. Half length
+//   (the source's half model, BRB_SOURCE_FACTS section 7): u_x = 0 on the symmetry plane
+//   (core, mortar, tube at mid-length), the driven face follows u_x = d(t) / 2; the brace
+//   elongation reported is twice the driven face's displacement.
 // - Loading: the protocol's targets d_1, d_2, ... from d_0 = 0, each segment a smooth 1 - cos
 //   ramp (smooth_ramp: zero velocity at both ends) of duration time_per_deformation x |d_i -
 //   d_i-1|. Default time_per_deformation: 20 T_1 / d_y, with T_1 = 4 L / sqrt(E / rho) the first

@@ -43,12 +43,20 @@ struct SolidCyclicSettings {
   double contact_penalty_factor = 1.0;
 };
 
+/// The quasi-static checks' floor, as a fraction of P_y d_y / 2 (see SolidCyclicResult).
+inline constexpr double kQuasiStaticFloorFraction = 0.01;
+
 struct SolidCyclicResult {
   /// Steps: one per output record (step k: record k; `substeps`: the explicit steps since
   /// the previous record); cycles, peaks and indicators as the reduced-order test.
   analysis::CyclicTestResult cyclic;
-  SolidBraceRun run;                ///< records with their energies
-  double max_kinetic_ratio = 0.0;   ///< largest KE / IE over the records with IE > 0
+  SolidBraceRun run; ///< records with their energies
+  /// KE / IE and hourglass / IE are taken over the records whose internal energy IE exceeds
+  /// this floor (N mm): kQuasiStaticFloorFraction of the elastic energy at yield, P_y d_y / 2.
+  /// Below it the ratio measures the start of the ramp, not the quasi-static state (at t -> 0
+  /// KE / IE grows without bound for any loading rate).
+  double quasi_static_floor = 0.0;
+  double max_kinetic_ratio = 0.0;   ///< largest KE / IE over the records with IE > the floor
   double max_hourglass_ratio = 0.0; ///< largest hourglass / IE over the same records
   double max_energy_error = 0.0;    ///< largest relative energy-balance error of a record
   double contact_penalty = 0.0;     ///< N/mm^3 (0: no contact)

@@ -52,6 +52,19 @@ struct CyclePeaks {
 };
 CyclePeaks cycle_peaks(std::span<const double> force, CycleSpan cycle);
 
+/// Excursions of a deformation history: the spans between consecutive turning points,
+/// counting the first and the last point as turning points (find_reversals with
+/// `reversal_threshold`, mm). A monotonic or half-cycle protocol (the source's small-BRB cases
+/// 1 and 2), which closes no cycle, still has one or two excursions. A span of zero length
+/// (a history of one point) is not one.
+std::vector<CycleSpan> segment_excursions(std::span<const double> deformation,
+                                          double reversal_threshold);
+
+/// Peak force of an excursion in its own direction (N, magnitude): the largest force of an
+/// elongating excursion, the largest compression of a shortening one (0 when it has none).
+double excursion_peak(std::span<const double> deformation, std::span<const double> force,
+                      CycleSpan excursion);
+
 struct RecordComparisonOptions {
   /// mm (>= 0): reversal noise threshold for segment_cycles; the specimens use 0.1 dy.
   double reversal_threshold = 0.0;
@@ -80,6 +93,20 @@ struct CycleComparison {
   double peak_compression_error() const;
 };
 
+/// One excursion of the compared points (segment_excursions): its work and its peak force.
+struct ExcursionComparison {
+  CycleSpan span;
+  double test_work = 0.0;  ///< trapezoidal integral of F d(delta) (N mm; loop_energy's rule)
+  double model_work = 0.0; ///< N mm
+  double test_peak = 0.0;  ///< excursion_peak (N)
+  double model_peak = 0.0; ///< N
+  bool scored = false;     ///< |test work| at or above the energy floor
+  /// |model - test| / |test| work, and the same for the peak (scored excursions only; 0
+  /// otherwise; the peak's error is infinite when the test excursion has no peak).
+  double work_error() const;
+  double peak_error() const;
+};
+
 struct RecordComparison {
   double normalised_rms_error = 0.0;
   std::vector<CycleComparison> cycles;
@@ -92,11 +119,17 @@ struct RecordComparison {
   /// cycles (0 without one).
   double max_peak_tension_error = 0.0;
   double max_peak_compression_error = 0.0;
+  /// Excursions (half cycles), scored when |test work| reaches the energy floor's fraction of
+  /// the largest |test work| of an excursion: the metrics of a protocol that closes no cycle.
+  std::vector<ExcursionComparison> excursions;
+  std::size_t scored_excursions = 0;
+  double max_excursion_work_error = 0.0; ///< over the scored excursions (0 without one)
+  double max_excursion_peak_error = 0.0; ///< over the scored excursions (0 without one)
 };
 
-/// The metrics of issue 4 (and the peaks per cycle of issue 6) for a model and a test force at the
-/// same deformation points (N, mm). Throws std::invalid_argument when the three series differ in
-/// length or are empty, or the test force is zero everywhere.
+/// The metrics of issue 4 (and the peaks per cycle and per excursion of issue 6) for a model and a
+/// test force at the same deformation points (N, mm). Throws std::invalid_argument when the three
+/// series differ in length or are empty, or the test force is zero everywhere.
 RecordComparison compare_with_record(std::span<const double> deformation,
                                      std::span<const double> test_force,
                                      std::span<const double> model_force,
