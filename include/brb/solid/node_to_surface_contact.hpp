@@ -85,10 +85,18 @@ struct NodeToSurfaceContactSettings {
   void validate() const;
 };
 
-/// The contact of one slave node (committed or trial).
-struct NodeContactState {
-  bool in_contact = false;
-  bool slipping = false;
+/// At most this many contacts per slave node: one per cluster of master-face normals, so a node
+/// in a concave corner (valley) of the master surface is pushed out of each face it penetrates
+/// (two faces of a prismatic opening's corner, three at a box's inner corner).
+inline constexpr int kMaxFaceContacts = 3;
+
+/// Master faces whose outward normals make less than 45 degrees with a contact's normal belong
+/// to its cluster: coplanar neighbours, a slight crease or a warped face, but not the other
+/// face of a right-angled corner. cos(45 deg).
+inline constexpr double kNormalClusterCosine = 0.70710678118654752;
+
+/// One contact of a slave node with a master face (committed or trial).
+struct FaceContact {
   int face = -1;                                              ///< master face of the contact point
   Eigen::Vector2d natural = Eigen::Vector2d::Zero();          ///< its natural coordinates
   double gap = 0.0;                                           ///< g (mm), < 0 in contact
@@ -97,7 +105,27 @@ struct NodeContactState {
   Eigen::Vector3d tangential_force = Eigen::Vector3d::Zero(); ///< T (N); the slave gets -T
   int anchor_face = -1;                                       ///< stick anchor (master face)
   Eigen::Vector2d anchor_natural = Eigen::Vector2d::Zero();
+};
+
+/// The contact of one slave node (committed or trial). Its first contact (the nearest face's)
+/// is the inherited FaceContact, where single-face users read it; a node in a concave corner
+/// has its further contacts (one per further normal cluster) in corner_contacts.
+struct NodeContactState : FaceContact {
+  bool in_contact = false; ///< contact_count > 0
+  bool slipping = false;   ///< any of its contacts slips
+  int contact_count = 0;   ///< 0 open, 1 one face, 2 or 3 a concave corner
+  std::array<FaceContact, kMaxFaceContacts - 1> corner_contacts{};
   double dissipated_energy = 0.0; ///< friction work of this node since the start (N mm)
+
+  /// Contact k < contact_count: 0 the nearest face's, then the corner's further ones.
+  const FaceContact& contact(int k) const {
+    return k == 0 ? static_cast<const FaceContact&>(*this)
+                  : corner_contacts[static_cast<std::size_t>(k - 1)];
+  }
+  FaceContact& contact(int k) {
+    return k == 0 ? static_cast<FaceContact&>(*this)
+                  : corner_contacts[static_cast<std::size_t>(k - 1)];
+  }
 };
 
 /// What the last add_force() did (the search's cost) and how often the buckets were built.
@@ -107,6 +135,7 @@ struct ContactStatistics {
   long bucket_builds = 0;         ///< since construction
   int nodes_in_contact = 0;       ///< trial
   int nodes_slipping = 0;         ///< trial
+  int nodes_in_corners = 0;       ///< trial: nodes touching faces of more than one normal cluster
 };
 
 class NodeToSurfaceContact final : public SolidInteraction {
@@ -146,9 +175,17 @@ public:
   const std::vector<NodeContactState>& trial_states(int pass) const;
 
 private:
+  /// A master face on which a point projects (see collect_hits).
+  struct Hit {
+    int face = -1;
+    QuadProjection projection;
+  };
+
   /// What one slave node adds to the force vector, and what its search cost.
   struct NodeRecord {
-    static constexpr int kCapacity = 16; // slave, contact face (normal, rotation), anchor face
+    // per contact: slave (normal + friction, rotation), contact face (normal, rotation),
+    // anchor face
+    static constexpr int kCapacity = 16 * kMaxFaceContacts;
     int count = 0;
     std::array<int, kCapacity> node{};
     std::array<Eigen::Vector3d, kCapacity> value;
@@ -156,6 +193,7 @@ private:
     long box_tests = 0;
     bool failed = false;
     std::string reason;
+    std::vector<Hit> hits; // of the last collect_hits (kept: no allocation once grown)
 
     void add(int at, const Eigen::Vector3d& force) {
       node[static_cast<std::size_t>(count)] = at;
@@ -182,16 +220,12 @@ private:
   static Pass make_pass(const Eigen::Matrix3Xd& reference, const std::vector<QuadFace>& slave,
                         std::vector<QuadFace> master, double penalty,
                         const NodeToSurfaceContactSettings& settings);
-  /// The master face nearest `point` (smallest |gap|) among those of its bucket within
-  /// search_distance on which it projects inside; when there is none, the nearest on which
-  /// it projects at most 0.05 (natural) beyond an edge. Faces holding `own_node` (the slave
-  /// itself, when the surfaces share nodes) are skipped. face -1 when none.
-  struct Hit {
-    int face = -1;
-    QuadProjection projection;
-  };
-  Hit nearest_face(const Pass& pass, const Configuration& configuration,
-                   const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
+  /// Into record.hits, in the bucket's order: the master faces of `point`'s bucket within
+  /// search_distance on which it projects inside or at most 0.05 (natural) beyond an edge, but
+  /// not beside a convex edge. Faces holding `own_node` (the slave itself, when the surfaces
+  /// share nodes) are skipped.
+  void collect_hits(const Pass& pass, const Configuration& configuration,
+                    const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
   /// Rebuilds the pass's buckets when a master node moved by more than half a bucket.
   void update_buckets(Pass& pass, const Configuration& configuration);
   /// The trial contact of slave `i` of `pass` into pass.trial[i] and pass.records[i] (its
