@@ -1,7 +1,8 @@
 // Node-to-surface penalty contact with Coulomb friction (see node_to_surface_contact.hpp).
 //
 // Forces (internal-force sense, f = dW/dx with W the stored energy) of a slave node s in
-// contact with face c at xi_c, its anchor on face b at xi_a:
+// contact with face c at xi_c, its anchor on face b at xi_a (a node in a concave corner has one
+// such contact per face of the corner, each adding its own (C1)-(C5)):
 //   (C1) g = (x_s - x_c) . n,  N = -k_N g
 //   (C2) normal:  f_s += -N n,  f_a += N N_a(xi_c) n (a on face c)
 //   (C3) d = x_s - x_b(xi_a),  u = (I - n n^T) d = T / k_T after the return map

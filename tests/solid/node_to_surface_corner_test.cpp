@@ -202,5 +202,60 @@ TEST(NodeToSurfaceContactCorner, ANodeInsideAConvexCornerKeepsOnlyTheNearestFace
   }
 }
 
+TEST(NodeToSurfaceContactCorner, AnEndingContactCreditsItsSpringEnergyAsFrictionWork) {
+  // A crease node pressed into both faces, moved in stick (kappa 0.5) along y by 0.004 mm, then
+  // lifted out of the corner in one step. Theory: T = k_T 0.004 on each face (stick), stored
+  // sum 1/2 |T|^2 / k_T = 2 x 1/2 k_T 0.004^2 per node; lifted straight off, T does no work, so
+  // the balance (work = stored + friction work) needs that energy credited as friction work
+  // when the contacts end: dissipated = 2 nodes x 2 faces x 1/2 k_T 0.004^2.
+  const Valley valley;
+  const double penalty = 1000.0, ratio = 1.5, k_T = ratio * Valley::normal_stiffness(penalty);
+  NodeToSurfaceContact contact(valley.nodes, valley.slave, valley.master,
+                               settings_with(penalty, ratio, 0.5));
+  force_at(contact, valley.slave_moved({-0.03, 0.0, -0.02}));
+  contact.commit();
+  force_at(contact, valley.slave_moved({-0.03, 0.004, -0.02}));
+  ASSERT_EQ(contact.statistics().nodes_slipping, 0);
+  ASSERT_EQ(contact.statistics().nodes_in_corners, 2);
+  contact.commit();
+  EXPECT_EQ(contact.dissipated_energy(), 0.0);
+  force_at(contact, valley.slave_moved({0.1, 0.004, 0.1}));
+  ASSERT_EQ(contact.statistics().nodes_in_contact, 0);
+  contact.commit();
+  EXPECT_EQ(contact.stored_energy(), 0.0);
+  EXPECT_NEAR(contact.dissipated_energy(), 4 * 0.5 * k_T * 0.004 * 0.004,
+              1e-12 * k_T * 0.004 * 0.004);
+}
+
+TEST(NodeToSurfaceContactCorner, CornerContactsDoNotDependOnTheThreadCount) {
+  // Two-pass contact (the L's nodes also on the slave face) sliding along the valley into
+  // slip: forces and friction work bitwise equal for 1, 2 and 3 threads (each node writes its
+  // own record, summed in node order).
+  const Valley valley;
+  NodeToSurfaceContactSettings settings = settings_with(1000.0, 1.0, 0.3);
+  settings.two_pass = true;
+  std::vector<Eigen::VectorXd> reference;
+  double reference_dissipation = 0.0;
+  for (int threads : {1, 2, 3}) {
+    NodeToSurfaceContact contact(valley.nodes, valley.slave, valley.master, settings);
+    contact.set_threads(threads);
+    std::vector<Eigen::VectorXd> forces;
+    for (int n = 0; n <= 40; ++n) {
+      forces.push_back(force_at(contact, valley.slave_moved({-0.03, 0.005 * n, -0.02})));
+      contact.commit();
+    }
+    if (threads == 1) {
+      reference = forces;
+      reference_dissipation = contact.dissipated_energy();
+      EXPECT_EQ(contact.statistics().nodes_in_corners, 2);
+      EXPECT_GT(reference_dissipation, 0.0);
+      continue;
+    }
+    for (std::size_t k = 0; k < forces.size(); ++k)
+      EXPECT_TRUE(forces[k] == reference[k]) << threads << " threads, step " << k;
+    EXPECT_EQ(contact.dissipated_energy(), reference_dissipation);
+  }
+}
+
 } // namespace
 } // namespace brb::solid

@@ -19,9 +19,15 @@
 //    material::PenaltyFriction (committed slip zero: the anchor carries the slip) for the
 //    Coulomb return map and its dissipation. On slip the anchor moves by the slip increment,
 //    x_a + s_1 e_1 + s_2 e_2, projected back on the master surface: the anchor can cross to
-//    another face (the core slides along the whole casing) and T = k_T u holds again with the
-//    new anchor (a moved anchor that falls off the master surface's free edge restarts at the
-//    contact point: the next step starts from T = 0 there).
+//    another face of the contact's normal cluster (the core slides along the whole casing) and
+//    T = k_T u holds again with the new anchor. Only faces of that cluster (see Corners): the
+//    projection of x_a + slip on a flat cluster moves nothing in its plane, so the anchor lands
+//    on the target, the next step's spring is T / k_T, and the credited friction work T . slip
+//    is exactly the work of T minus the change of 1/2 |T|^2 / k_T (steady sliding: T . dx).
+//    Projected on the other face of a corner, the anchor would land off the target, and the
+//    next step would read the offset as slip and credit kappa N x offset that no force did work
+//    for. A target beyond the cluster's faces (a free edge) restarts the contact at the contact
+//    point with T = 0, the trial spring energy 1/2 k_T |u|^2 credited as friction work.
 //    Force: T = T_1 e_1 + T_2 e_2; T on s, -T N_b(xi_a) on the anchor face (internal-force
 //    sense: the spring pulls the slave back towards its anchor).
 //    Stored energy 1/2 |T|^2 / k_T = 1/2 k_T |u|^2 in stick; its exact gradient also has the
@@ -38,8 +44,21 @@
 //    of the master body (a casing node at the mouth once the core has slid out from under it,
 //    or a casing node under the core's bearing face, which lies on the plane of the side faces'
 //    edges, would otherwise 'penetrate' a side face by the core's half-width).
-//  - Open (g >= 0 or no face): no force; the anchor is dropped (a new contact starts with
-//    T = 0, PenaltyFriction (F6)); the node's dissipated energy is kept.
+//  - Corners: master faces whose outward normals make less than 45 degrees with a contact's
+//    normal are its normal cluster (coplanar neighbours, a crease as above, a warped face). The
+//    node's first contact is its nearest face (as above); when it penetrates it, each further
+//    cluster adds its nearest penetrated face that forms a valley with every face taken (each
+//    face's centroid in front of the other's tangent plane at its contact point): a node in a
+//    concave corner (a core corner in the corner of the casing's opening) is pushed out of each
+//    face, N_i = k_N <-g_i>, with its own anchor and Coulomb state (at most kMaxFaceContacts).
+//    The stored energy is the sum over the contacts, so in stick the force is still its exact
+//    gradient. At a convex corner (centroids behind) the nearest face alone pushes the node out
+//    (the shortest way out of the master body). A committed contact continues in the trial
+//    contact of its cluster (the closest normal).
+//  - Open (g >= 0 or no face), or a contact that leaves its cluster: no force; the anchor is
+//    dropped (a new contact starts with T = 0, PenaltyFriction (F6)) and the spring's energy
+//    1/2 |T|^2 / k_T is credited as friction work (it relaxes by slipping as the contact ends);
+//    the node's dissipated energy is kept.
 //
 // Search: master faces in buckets along the master surface's longest axis (face_buckets.hpp),
 // rebuilt when a master node has moved by more than half a bucket since the last build. For
@@ -52,10 +71,11 @@
 //
 // Trial / commit as SolidInteraction: add_force() writes trial states only, commit() accepts
 // them. Threads (set_threads): the slave nodes are shared among threads in contiguous blocks,
-// each node writes only its own record (at most 14 contributions on 9 nodes, its search counts),
-// and the records are added to the force vector in node order by one thread, so results are
-// bitwise the same for every thread count. Two-pass mode: each surface is also the master of the
-// other's nodes, with half the penalty in each pass (symmetric treatment, no preferred surface).
+// each node writes only its own record (per contact at most 14 contributions on 9 nodes; its
+// search counts), and the records are added to the force vector in node order by one thread,
+// so results are bitwise the same for every thread count. Two-pass mode: each surface is also the
+// master of the other's nodes, with half the penalty in each pass (symmetric treatment, no
+// preferred surface).
 #pragma once
 
 #include "brb/material/penalty_friction.hpp"
