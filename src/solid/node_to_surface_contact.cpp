@@ -267,7 +267,104 @@ bool form_valley(const Eigen::Matrix<double, 3, 4>& nodes_a, const QuadPoint& po
          (centroid_a - point_b.position).dot(point_b.normal) > 0.0;
 }
 
+/// Each committed contact of `committed` continues in the trial contact of its normal cluster
+/// (the closest normal, within kNormalClusterCosine), keeping its stick anchor:
+/// predecessor[k] the committed contact trial contact k continues (-1: a new contact),
+/// continued[j] whether committed contact j continues.
+template <class HitType>
+void match_committed_contacts(const NodeContactState& committed,
+                              const std::array<HitType, kMaxFaceContacts>& contacts, int count,
+                              std::array<int, kMaxFaceContacts>& predecessor,
+                              std::array<bool, kMaxFaceContacts>& continued) {
+  predecessor.fill(-1);
+  continued.fill(false);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector3d& n = contacts[static_cast<std::size_t>(k)].projection.point.normal;
+    double closest = kNormalClusterCosine;
+    int& match = predecessor[static_cast<std::size_t>(k)];
+    for (int j = 0; j < committed.contact_count; ++j) {
+      const double cosine = committed.contact(j).normal.dot(n);
+      if (!continued[static_cast<std::size_t>(j)] && cosine > closest) {
+        closest = cosine;
+        match = j;
+      }
+    }
+    if (match >= 0)
+      continued[static_cast<std::size_t>(match)] = true;
+  }
+}
+
 } // namespace
+
+void NodeToSurfaceContact::add_contact_forces(
+    NodeRecord& record, int slave, const QuadPoint& contact, const QuadFace& contact_face,
+    const QuadFace& anchor_nodes, const Eigen::Vector2d& anchor_natural, double N,
+    const Eigen::Vector3d& T, double normal_offset, double gap, double k_T) {
+  const Eigen::Vector3d& n = contact.normal;
+  // (C2) normal, (C4) friction spring
+  record.add(slave, -N * n + T);
+  for (int a = 0; a < 4; ++a)
+    record.add(contact_face[a], N * contact.shape.value[a] * n);
+  const QuadShape anchor_shape = QuadShape::at(anchor_natural);
+  for (int b = 0; b < 4; ++b)
+    record.add(anchor_nodes[b], -anchor_shape.value[b] * T);
+
+  // (C5) rotation of the tangent plane
+  if (normal_offset != 0.0 && T.squaredNorm() > 0.0) {
+    const Eigen::Vector3d u = T / k_T;
+    const Eigen::Vector3d t1 = contact.tangents.col(0), t2 = contact.tangents.col(1);
+    const Eigen::Vector3d c1 = t2.cross(u) / contact.area_density;
+    const Eigen::Vector3d c2 = u.cross(t1) / contact.area_density;
+    Eigen::Matrix2d A;
+    A(0, 0) = t1.dot(t1);
+    A(1, 1) = t2.dot(t2);
+    A(0, 1) = A(1, 0) = t1.dot(t2) - gap * n.dot(contact.twist);
+    const Eigen::Vector2d r(c2.dot(contact.twist), c1.dot(contact.twist));
+    const Eigen::Vector2d w = A.inverse() * r;
+    const Eigen::Vector3d w_t = w.x() * t1 + w.y() * t2;
+    const double scale = -k_T * normal_offset;
+    record.add(slave, scale * w_t);
+    for (int a = 0; a < 4; ++a) {
+      const Eigen::Vector2d dN = contact.shape.gradient.row(a).transpose();
+      record.add(contact_face[a], scale * (dN.x() * c1 + dN.y() * c2 -
+                                           contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
+    }
+  }
+}
+
+int NodeToSurfaceContact::select_contacts(const Pass& pass, const Configuration& configuration,
+                                          const std::vector<Hit>& hits,
+                                          std::array<Hit, kMaxFaceContacts>& contacts) const {
+  const auto face_nodes = [&](int face) {
+    return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
+  };
+  // the nearest face (inside first, see nearest_of); when the node penetrates it, the nearest
+  // penetrated face of each further normal cluster that forms a valley with every face already
+  // taken (a concave corner: two independent penalties, one per face)
+  const Hit nearest = nearest_of(hits, [](const Hit&) { return true; });
+  if (nearest.face < 0 || !(nearest.projection.gap < 0.0))
+    return 0;
+  contacts[0] = nearest;
+  int count = 1;
+  while (count < kMaxFaceContacts) {
+    const Hit further = nearest_of(hits, [&](const Hit& hit) {
+      if (!(hit.projection.gap < 0.0))
+        return false;
+      for (int k = 0; k < count; ++k) {
+        const Hit& taken = contacts[static_cast<std::size_t>(k)];
+        if (hit.projection.point.normal.dot(taken.projection.point.normal) > kNormalClusterCosine ||
+            !form_valley(face_nodes(hit.face), hit.projection.point, face_nodes(taken.face),
+                         taken.projection.point))
+          return false;
+      }
+      return true;
+    });
+    if (further.face < 0)
+      break;
+    contacts[static_cast<std::size_t>(count++)] = further;
+  }
+  return count;
+}
 
 void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
                                            const Configuration& configuration) const {
@@ -285,58 +382,17 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
   const auto face_nodes = [&](int face) {
     return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
   };
-
-  // The contacts: the nearest face (inside first, see nearest_of); when the node penetrates
-  // it, the nearest penetrated face of each further normal cluster that forms a valley with
-  // every contact already taken (a concave corner: two independent penalties, one per face).
   const Eigen::Vector3d x_s = configuration.position(slave);
   collect_hits(pass, configuration, x_s, slave, record);
   std::array<Hit, kMaxFaceContacts> contacts;
-  int count = 0;
-  const Hit nearest = nearest_of(record.hits, [](const Hit&) { return true; });
-  if (nearest.face >= 0 && nearest.projection.gap < 0.0) {
-    contacts[0] = nearest;
-    count = 1;
-    while (count < kMaxFaceContacts) {
-      const Hit further = nearest_of(record.hits, [&](const Hit& hit) {
-        if (!(hit.projection.gap < 0.0))
-          return false;
-        for (int k = 0; k < count; ++k) {
-          const Hit& taken = contacts[static_cast<std::size_t>(k)];
-          if (hit.projection.point.normal.dot(taken.projection.point.normal) >
-                  kNormalClusterCosine ||
-              !form_valley(face_nodes(hit.face), hit.projection.point, face_nodes(taken.face),
-                           taken.projection.point))
-            return false;
-        }
-        return true;
-      });
-      if (further.face < 0)
-        break;
-      contacts[static_cast<std::size_t>(count++)] = further;
-    }
-  }
+  const int count = select_contacts(pass, configuration, record.hits, contacts);
 
-  // Each committed contact continues in the trial contact of its normal cluster (the closest
-  // normal), keeping its stick anchor; one that does not (the node opened, or left that face
-  // cluster) ends, and its friction spring relaxes: the spring's energy 1/2 |T|^2 / k_T is
-  // credited as friction work, so the stored energy it leaves is not lost from the balance.
+  // a committed contact that does not continue ends: its friction spring relaxes, and the
+  // spring's energy 1/2 |T|^2 / k_T is credited as friction work, so the stored energy it
+  // leaves is not lost from the balance
   std::array<int, kMaxFaceContacts> predecessor;
-  predecessor.fill(-1);
   std::array<bool, kMaxFaceContacts> continued{};
-  for (int k = 0; k < count; ++k) {
-    const Eigen::Vector3d& n = contacts[static_cast<std::size_t>(k)].projection.point.normal;
-    double closest = kNormalClusterCosine;
-    for (int j = 0; j < committed.contact_count; ++j) {
-      const double cosine = committed.contact(j).normal.dot(n);
-      if (!continued[static_cast<std::size_t>(j)] && cosine > closest) {
-        closest = cosine;
-        predecessor[static_cast<std::size_t>(k)] = j;
-      }
-    }
-    if (predecessor[static_cast<std::size_t>(k)] >= 0)
-      continued[static_cast<std::size_t>(predecessor[static_cast<std::size_t>(k)])] = true;
-  }
+  match_committed_contacts(committed, contacts, count, predecessor, continued);
   double dissipated = committed.dissipated_energy;
   for (int j = 0; j < committed.contact_count; ++j)
     if (!continued[static_cast<std::size_t>(j)])
@@ -412,37 +468,9 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
     }
     const double N = response.normal_force;
 
-    // (C2) normal, (C4) friction spring
-    record.add(slave, -N * n + T);
-    for (int a = 0; a < 4; ++a)
-      record.add(contact_face[a], N * contact.shape.value[a] * n);
-    const QuadFace& anchor_nodes = pass.master_faces[static_cast<std::size_t>(anchor_face)];
-    const QuadShape anchor_shape = QuadShape::at(anchor_natural);
-    for (int b = 0; b < 4; ++b)
-      record.add(anchor_nodes[b], -anchor_shape.value[b] * T);
-
-    // (C5) rotation of the tangent plane
-    const double normal_offset = d.dot(n);
-    if (normal_offset != 0.0 && T.squaredNorm() > 0.0) {
-      const Eigen::Vector3d u = T / k_T;
-      const Eigen::Vector3d t1 = contact.tangents.col(0), t2 = contact.tangents.col(1);
-      const Eigen::Vector3d c1 = t2.cross(u) / contact.area_density;
-      const Eigen::Vector3d c2 = u.cross(t1) / contact.area_density;
-      Eigen::Matrix2d A;
-      A(0, 0) = t1.dot(t1);
-      A(1, 1) = t2.dot(t2);
-      A(0, 1) = A(1, 0) = t1.dot(t2) - gap * n.dot(contact.twist);
-      const Eigen::Vector2d r(c2.dot(contact.twist), c1.dot(contact.twist));
-      const Eigen::Vector2d w = A.inverse() * r;
-      const Eigen::Vector3d w_t = w.x() * t1 + w.y() * t2;
-      const double scale = -k_T * normal_offset;
-      record.add(slave, scale * w_t);
-      for (int a = 0; a < 4; ++a) {
-        const Eigen::Vector2d dN = contact.shape.gradient.row(a).transpose();
-        record.add(contact_face[a], scale * (dN.x() * c1 + dN.y() * c2 -
-                                             contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
-      }
-    }
+    add_contact_forces(record, slave, contact, contact_face,
+                       pass.master_faces[static_cast<std::size_t>(anchor_face)], anchor_natural, N,
+                       T, d.dot(n), gap, k_T);
 
     FaceContact& state = trial.contact(k);
     state.face = hit.face;

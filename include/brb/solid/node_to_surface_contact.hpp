@@ -246,6 +246,19 @@ private:
   /// share nodes) are skipped.
   void collect_hits(const Pass& pass, const Configuration& configuration,
                     const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
+  /// The node's contacts among `hits` into `contacts` (the nearest face, then at a concave
+  /// corner one face per further normal cluster; see the header comment); returns their count,
+  /// 0 when the nearest face is not penetrated.
+  int select_contacts(const Pass& pass, const Configuration& configuration,
+                      const std::vector<Hit>& hits,
+                      std::array<Hit, kMaxFaceContacts>& contacts) const;
+  /// (C2), (C4), (C5) of one contact into `record` (node_to_surface_contact.cpp):
+  /// normal_offset = (x_s - x_a) . n.
+  static void add_contact_forces(NodeRecord& record, int slave, const QuadPoint& contact,
+                                 const QuadFace& contact_face, const QuadFace& anchor_nodes,
+                                 const Eigen::Vector2d& anchor_natural, double N,
+                                 const Eigen::Vector3d& T, double normal_offset, double gap,
+                                 double k_T);
   /// Rebuilds the pass's buckets when a master node moved by more than half a bucket.
   void update_buckets(Pass& pass, const Configuration& configuration);
   /// The trial contact of slave `i` of `pass` into pass.trial[i] and pass.records[i] (its
