@@ -1,7 +1,8 @@
 // Node-to-surface penalty contact with Coulomb friction (see node_to_surface_contact.hpp).
 //
 // Forces (internal-force sense, f = dW/dx with W the stored energy) of a slave node s in
-// contact with face c at xi_c, its anchor on face b at xi_a:
+// contact with face c at xi_c, its anchor on face b at xi_a (a node in a concave corner has one
+// such contact per face of the corner, each adding its own (C1)-(C5)):
 //   (C1) g = (x_s - x_c) . n,  N = -k_N g
 //   (C2) normal:  f_s += -N n,  f_a += N N_a(xi_c) n (a on face c)
 //   (C3) d = x_s - x_b(xi_a),  u = (I - n n^T) d = T / k_T after the return map
@@ -198,17 +199,14 @@ bool beside_convex_edge(const QuadProjection& projection) {
 
 } // namespace
 
-NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
-                                                             const Configuration& configuration,
-                                                             const Eigen::Vector3d& point,
-                                                             int own_node,
-                                                             NodeRecord& record) const {
-  // Faces on which the point projects inside come first; only when there is none, a face on
-  // whose extension it projects at most kEdgeTolerance beyond an edge (see the header).
+void NodeToSurfaceContact::collect_hits(const Pass& pass, const Configuration& configuration,
+                                        const Eigen::Vector3d& point, int own_node,
+                                        NodeRecord& record) const {
+  // a face on whose extension the point projects at most kEdgeTolerance beyond an edge is a
+  // candidate too (the valley crease's dead zone, see the header); nearest_of prefers faces
+  // on which it projects inside
   constexpr double kEdgeTolerance = 0.05;
-  Hit inside, near_edge;
-  double inside_distance = std::numeric_limits<double>::infinity();
-  double near_edge_distance = inside_distance;
+  record.hits.clear();
   for (int f : pass.buckets.candidates(point)) {
     const QuadFace& face = pass.master_faces[static_cast<std::size_t>(f)];
     if (std::find(face.begin(), face.end(), own_node) != face.end())
@@ -221,113 +219,97 @@ NodeToSurfaceContact::Hit NodeToSurfaceContact::nearest_face(const Pass& pass,
     const QuadProjection projection = project_on_quad(nodes, point);
     if (!projection.converged || projection.excess > kEdgeTolerance)
       continue;
-    const double distance = std::abs(projection.gap);
     // within the edge band (inside or just beyond an edge) and half a face deep: beside a
     // convex edge, whichever side of the edge round-off puts it (a node under the core's
     // bearing face lies on the plane of its side faces' edges: 'inside' a side face at its
     // edge, a half-width deep)
     if (projection.excess > -kEdgeTolerance && beside_convex_edge(projection))
       continue;
-    if (projection.inside && distance < inside_distance) {
+    record.hits.push_back({f, projection});
+  }
+}
+
+namespace {
+
+/// Among `hits` that `admit` accepts, the nearest (smallest |gap|) of those on whose face the
+/// point projects inside; when there is none, the nearest of those beyond an edge. Face -1
+/// when none; ties go to the first in the bucket's order (the same for any thread count).
+template <class HitType, class Admit>
+HitType nearest_of(const std::vector<HitType>& hits, const Admit& admit) {
+  HitType inside, near_edge;
+  double inside_distance = std::numeric_limits<double>::infinity();
+  double near_edge_distance = inside_distance;
+  for (const HitType& hit : hits) {
+    if (!admit(hit))
+      continue;
+    const double distance = std::abs(hit.projection.gap);
+    if (hit.projection.inside && distance < inside_distance) {
       inside_distance = distance;
-      inside = {f, projection};
-    } else if (!projection.inside && distance < near_edge_distance) {
+      inside = hit;
+    } else if (!hit.projection.inside && distance < near_edge_distance) {
       near_edge_distance = distance;
-      near_edge = {f, projection};
+      near_edge = hit;
     }
   }
   return inside.face >= 0 ? inside : near_edge;
 }
 
-void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
-                                           const Configuration& configuration) const {
-  const int slave = pass.slave_nodes[i];
-  const NodeContactState& committed = pass.committed[i];
-  NodeContactState& trial = pass.trial[i];
-  trial = NodeContactState{};
-  trial.dissipated_energy = committed.dissipated_energy;
-  NodeRecord& record = pass.records[i];
-  record.count = 0;
-  record.projections = 0;
-  record.box_tests = 0;
-  record.failed = false;
+/// Two master faces, each with the slave node's contact point and outward normal on it, form
+/// a valley (a concave corner of the master body, which the node can penetrate on both sides)
+/// when each face's centroid lies in front of the other's tangent plane at its contact point;
+/// at a convex corner both lie behind, and the node keeps the nearest face only (the shortest
+/// way out of the body).
+bool form_valley(const Eigen::Matrix<double, 3, 4>& nodes_a, const QuadPoint& point_a,
+                 const Eigen::Matrix<double, 3, 4>& nodes_b, const QuadPoint& point_b) {
+  const Eigen::Vector3d centroid_a = nodes_a.rowwise().mean();
+  const Eigen::Vector3d centroid_b = nodes_b.rowwise().mean();
+  return (centroid_b - point_a.position).dot(point_a.normal) > 0.0 &&
+         (centroid_a - point_b.position).dot(point_b.normal) > 0.0;
+}
 
-  const Eigen::Vector3d x_s = configuration.position(slave);
-  const Hit hit = nearest_face(pass, configuration, x_s, slave, record);
-  if (hit.face < 0 || !(hit.projection.gap < 0.0))
-    return; // open
-  const QuadPoint& contact = hit.projection.point;
-  const double gap = hit.projection.gap; // (C1)
-  if (gap < -0.5 * settings_.search_distance) {
-    std::ostringstream message;
-    message << "node-to-surface contact: node " << slave << " at (" << x_s.x() << ", " << x_s.y()
-            << ", " << x_s.z() << ") penetrates master face " << hit.face << " by " << -gap
-            << " mm (natural coordinates " << contact.natural.x() << ", " << contact.natural.y()
-            << (hit.projection.inside ? ", inside the face" : ", beyond its edge")
-            << "), more than half the search distance (" << settings_.search_distance
-            << " mm): the penalty is too soft or the step too large";
-    record.failed = true;
-    record.reason = message.str();
-    return;
-  }
-  const QuadFace& contact_face = pass.master_faces[static_cast<std::size_t>(hit.face)];
-  const Eigen::Vector3d& n = contact.normal;
-
-  // stick anchor: the committed one, or the contact point for a new contact
-  int anchor_face = hit.face;
-  Eigen::Vector2d anchor_natural = contact.natural;
-  if (committed.in_contact) {
-    anchor_face = committed.anchor_face;
-    anchor_natural = committed.anchor_natural;
-  }
-  const auto anchor_position = [&](int face, const Eigen::Vector2d& natural) {
-    return QuadPoint::at(configuration.face(pass.master_faces[static_cast<std::size_t>(face)]),
-                         natural)
-        .position;
-  };
-  Eigen::Vector3d x_a = anchor_position(anchor_face, anchor_natural);
-
-  // (C3) tangential relative displacement in the tangent plane's basis
-  const Eigen::Vector3d e1 = contact.tangents.col(0).normalized();
-  const Eigen::Vector3d e2 = n.cross(e1);
-  Eigen::Vector3d d = x_s - x_a;
-  const material::PenaltyFriction& law = pass.laws[i];
-  material::FrictionState start;
-  start.dissipated_energy = committed.dissipated_energy; // slip zero: the anchor carries it
-  const material::PenaltyFriction::Response response =
-      law.evaluate(start, gap, Eigen::Vector2d(e1.dot(d), e2.dot(d)));
-
-  if (response.slipping) {
-    // move the anchor by the slip increment, back onto the master surface (maybe another face)
-    const Eigen::Vector3d target =
-        x_a + response.state.slip.x() * e1 + response.state.slip.y() * e2;
-    const Hit moved = nearest_face(pass, configuration, target, slave, record);
-    if (moved.face >= 0) {
-      anchor_face = moved.face;
-      anchor_natural = moved.projection.point.natural;
-    } else { // slid off the master surface's edge: restart from the contact point
-      anchor_face = hit.face;
-      anchor_natural = contact.natural;
+/// Each committed contact of `committed` continues in the trial contact of its normal cluster
+/// (the closest normal, within kNormalClusterCosine), keeping its stick anchor:
+/// predecessor[k] the committed contact trial contact k continues (-1: a new contact),
+/// continued[j] whether committed contact j continues.
+template <class HitType>
+void match_committed_contacts(const NodeContactState& committed,
+                              const std::array<HitType, kMaxFaceContacts>& contacts, int count,
+                              std::array<int, kMaxFaceContacts>& predecessor,
+                              std::array<bool, kMaxFaceContacts>& continued) {
+  predecessor.fill(-1);
+  continued.fill(false);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector3d& n = contacts[static_cast<std::size_t>(k)].projection.point.normal;
+    double closest = kNormalClusterCosine;
+    int& match = predecessor[static_cast<std::size_t>(k)];
+    for (int j = 0; j < committed.contact_count; ++j) {
+      const double cosine = committed.contact(j).normal.dot(n);
+      if (!continued[static_cast<std::size_t>(j)] && cosine > closest) {
+        closest = cosine;
+        match = j;
+      }
     }
-    x_a = anchor_position(anchor_face, anchor_natural);
-    d = x_s - x_a;
+    if (match >= 0)
+      continued[static_cast<std::size_t>(match)] = true;
   }
+}
 
-  const double k_T = law.parameters().tangential_stiffness;
-  const Eigen::Vector3d T = response.tangential_force.x() * e1 + response.tangential_force.y() * e2;
-  const double N = response.normal_force;
+} // namespace
 
+void NodeToSurfaceContact::add_contact_forces(
+    NodeRecord& record, int slave, const QuadPoint& contact, const QuadFace& contact_face,
+    const QuadFace& anchor_nodes, const Eigen::Vector2d& anchor_natural, double N,
+    const Eigen::Vector3d& T, double normal_offset, double gap, double k_T) {
+  const Eigen::Vector3d& n = contact.normal;
   // (C2) normal, (C4) friction spring
   record.add(slave, -N * n + T);
   for (int a = 0; a < 4; ++a)
     record.add(contact_face[a], N * contact.shape.value[a] * n);
-  const QuadFace& anchor_nodes = pass.master_faces[static_cast<std::size_t>(anchor_face)];
   const QuadShape anchor_shape = QuadShape::at(anchor_natural);
   for (int b = 0; b < 4; ++b)
     record.add(anchor_nodes[b], -anchor_shape.value[b] * T);
 
   // (C5) rotation of the tangent plane
-  const double normal_offset = d.dot(n);
   if (normal_offset != 0.0 && T.squaredNorm() > 0.0) {
     const Eigen::Vector3d u = T / k_T;
     const Eigen::Vector3d t1 = contact.tangents.col(0), t2 = contact.tangents.col(1);
@@ -348,22 +330,166 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
                                            contact.shape.value[a] * w_t + gap * w.dot(dN) * n));
     }
   }
+}
 
-  trial.in_contact = true;
-  trial.slipping = response.slipping;
-  trial.face = hit.face;
-  trial.natural = contact.natural;
-  trial.gap = gap;
-  trial.normal_force = N;
-  trial.normal = n;
-  trial.tangential_force = T;
-  trial.anchor_face = anchor_face;
-  trial.anchor_natural = anchor_natural;
-  trial.dissipated_energy = response.state.dissipated_energy;
-  if (!T.allFinite() || !std::isfinite(N)) {
-    record.failed = true;
-    record.reason = "node-to-surface contact: non-finite force at node " + std::to_string(slave);
+int NodeToSurfaceContact::select_contacts(const Pass& pass, const Configuration& configuration,
+                                          const std::vector<Hit>& hits,
+                                          std::array<Hit, kMaxFaceContacts>& contacts) const {
+  const auto face_nodes = [&](int face) {
+    return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
+  };
+  // the nearest face (inside first, see nearest_of); when the node penetrates it, the nearest
+  // penetrated face of each further normal cluster that forms a valley with every face already
+  // taken (a concave corner: two independent penalties, one per face)
+  const Hit nearest = nearest_of(hits, [](const Hit&) { return true; });
+  if (nearest.face < 0 || !(nearest.projection.gap < 0.0))
+    return 0;
+  contacts[0] = nearest;
+  int count = 1;
+  while (count < kMaxFaceContacts) {
+    const Hit further = nearest_of(hits, [&](const Hit& hit) {
+      if (!(hit.projection.gap < 0.0))
+        return false;
+      for (int k = 0; k < count; ++k) {
+        const Hit& taken = contacts[static_cast<std::size_t>(k)];
+        if (hit.projection.point.normal.dot(taken.projection.point.normal) > kNormalClusterCosine ||
+            !form_valley(face_nodes(hit.face), hit.projection.point, face_nodes(taken.face),
+                         taken.projection.point))
+          return false;
+      }
+      return true;
+    });
+    if (further.face < 0)
+      break;
+    contacts[static_cast<std::size_t>(count++)] = further;
   }
+  return count;
+}
+
+void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
+                                           const Configuration& configuration) const {
+  const int slave = pass.slave_nodes[i];
+  const NodeContactState& committed = pass.committed[i];
+  NodeContactState& trial = pass.trial[i];
+  trial = NodeContactState{};
+  NodeRecord& record = pass.records[i];
+  record.count = 0;
+  record.projections = 0;
+  record.box_tests = 0;
+  record.failed = false;
+  const material::PenaltyFriction& law = pass.laws[i];
+  const double k_T = law.parameters().tangential_stiffness;
+  const auto face_nodes = [&](int face) {
+    return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
+  };
+  const Eigen::Vector3d x_s = configuration.position(slave);
+  collect_hits(pass, configuration, x_s, slave, record);
+  std::array<Hit, kMaxFaceContacts> contacts;
+  const int count = select_contacts(pass, configuration, record.hits, contacts);
+
+  // a committed contact that does not continue ends: its friction spring relaxes, and the
+  // spring's energy 1/2 |T|^2 / k_T is credited as friction work, so the stored energy it
+  // leaves is not lost from the balance
+  std::array<int, kMaxFaceContacts> predecessor;
+  std::array<bool, kMaxFaceContacts> continued{};
+  match_committed_contacts(committed, contacts, count, predecessor, continued);
+  double dissipated = committed.dissipated_energy;
+  for (int j = 0; j < committed.contact_count; ++j)
+    if (!continued[static_cast<std::size_t>(j)])
+      dissipated += 0.5 * committed.contact(j).tangential_force.squaredNorm() / k_T;
+
+  const auto anchor_position = [&](int face, const Eigen::Vector2d& natural) {
+    return QuadPoint::at(face_nodes(face), natural).position;
+  };
+  for (int k = 0; k < count; ++k) {
+    const Hit& hit = contacts[static_cast<std::size_t>(k)];
+    const QuadPoint& contact = hit.projection.point;
+    const double gap = hit.projection.gap; // (C1)
+    if (gap < -0.5 * settings_.search_distance) {
+      std::ostringstream message;
+      message << "node-to-surface contact: node " << slave << " at (" << x_s.x() << ", " << x_s.y()
+              << ", " << x_s.z() << ") penetrates master face " << hit.face << " by " << -gap
+              << " mm (natural coordinates " << contact.natural.x() << ", " << contact.natural.y()
+              << (hit.projection.inside ? ", inside the face" : ", beyond its edge")
+              << "), more than half the search distance (" << settings_.search_distance
+              << " mm): the penalty is too soft or the step too large";
+      record.failed = true;
+      record.reason = message.str();
+      return;
+    }
+    const QuadFace& contact_face = pass.master_faces[static_cast<std::size_t>(hit.face)];
+    const Eigen::Vector3d& n = contact.normal;
+
+    // stick anchor: the committed one of this cluster, or the contact point for a new contact
+    int anchor_face = hit.face;
+    Eigen::Vector2d anchor_natural = contact.natural;
+    if (const int j = predecessor[static_cast<std::size_t>(k)]; j >= 0) {
+      anchor_face = committed.contact(j).anchor_face;
+      anchor_natural = committed.contact(j).anchor_natural;
+    }
+    Eigen::Vector3d x_a = anchor_position(anchor_face, anchor_natural);
+
+    // (C3) tangential relative displacement in the tangent plane's basis
+    const Eigen::Vector3d e1 = contact.tangents.col(0).normalized();
+    const Eigen::Vector3d e2 = n.cross(e1);
+    Eigen::Vector3d d = x_s - x_a;
+    const Eigen::Vector2d u_trial(e1.dot(d), e2.dot(d));
+    material::FrictionState start;
+    start.dissipated_energy = dissipated; // slip zero: the anchor carries it
+    const material::PenaltyFriction::Response response = law.evaluate(start, gap, u_trial);
+    Eigen::Vector3d T = response.tangential_force.x() * e1 + response.tangential_force.y() * e2;
+    dissipated = response.state.dissipated_energy;
+
+    if (response.slipping) {
+      // move the anchor by the slip increment, back onto a face of this contact's normal
+      // cluster (maybe another face: the core slides along the whole casing). Never onto a
+      // face of another direction (the other side of a corner): its projection would put the
+      // anchor off x_a + slip, and the next step would read the offset as slip and credit
+      // kappa N x offset that no force did work for.
+      const Eigen::Vector3d target =
+          x_a + response.state.slip.x() * e1 + response.state.slip.y() * e2;
+      collect_hits(pass, configuration, target, slave, record);
+      const Hit moved = nearest_of(record.hits, [&](const Hit& candidate) {
+        return candidate.projection.point.normal.dot(n) > kNormalClusterCosine;
+      });
+      if (moved.face >= 0) {
+        anchor_face = moved.face;
+        anchor_natural = moved.projection.point.natural;
+      } else {
+        // slid off the cluster's faces (a free edge): the contact restarts at the contact
+        // point with T = 0, and the whole trial spring energy 1/2 k_T |u|^2 is friction work
+        anchor_face = hit.face;
+        anchor_natural = contact.natural;
+        T.setZero();
+        dissipated = start.dissipated_energy + 0.5 * k_T * u_trial.squaredNorm();
+      }
+      x_a = anchor_position(anchor_face, anchor_natural);
+      d = x_s - x_a;
+    }
+    const double N = response.normal_force;
+
+    add_contact_forces(record, slave, contact, contact_face,
+                       pass.master_faces[static_cast<std::size_t>(anchor_face)], anchor_natural, N,
+                       T, d.dot(n), gap, k_T);
+
+    FaceContact& state = trial.contact(k);
+    state.face = hit.face;
+    state.natural = contact.natural;
+    state.gap = gap;
+    state.normal_force = N;
+    state.normal = n;
+    state.tangential_force = T;
+    state.anchor_face = anchor_face;
+    state.anchor_natural = anchor_natural;
+    trial.slipping = trial.slipping || response.slipping;
+    if (!T.allFinite() || !std::isfinite(N)) {
+      record.failed = true;
+      record.reason = "node-to-surface contact: non-finite force at node " + std::to_string(slave);
+    }
+  }
+  trial.contact_count = count;
+  trial.in_contact = count > 0;
+  trial.dissipated_energy = dissipated;
 }
 
 void NodeToSurfaceContact::set_threads(int threads) {
@@ -391,6 +517,7 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
   statistics_.box_tests_last_call = 0;
   statistics_.nodes_in_contact = 0;
   statistics_.nodes_slipping = 0;
+  statistics_.nodes_in_corners = 0;
   for (Pass& pass : passes_) {
     update_buckets(pass, configuration);
     const std::size_t n = pass.slave_nodes.size();
@@ -414,6 +541,7 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
       statistics_.box_tests_last_call += record.box_tests;
       statistics_.nodes_in_contact += pass.trial[i].in_contact ? 1 : 0;
       statistics_.nodes_slipping += pass.trial[i].slipping ? 1 : 0;
+      statistics_.nodes_in_corners += pass.trial[i].contact_count > 1 ? 1 : 0;
     }
   }
   return true;
@@ -429,12 +557,14 @@ namespace {
 double stored_energy_of(const std::vector<NodeContactState>& states,
                         const std::vector<material::PenaltyFriction>& laws) {
   double energy = 0.0;
-  for (std::size_t i = 0; i < states.size(); ++i)
-    if (states[i].in_contact) {
-      const material::PenaltyFrictionParameters& p = laws[i].parameters();
-      energy += 0.5 * p.normal_stiffness * states[i].gap * states[i].gap +
-                0.5 * states[i].tangential_force.squaredNorm() / p.tangential_stiffness;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const material::PenaltyFrictionParameters& p = laws[i].parameters();
+    for (int k = 0; k < states[i].contact_count; ++k) { // independent penalties: the sum
+      const FaceContact& contact = states[i].contact(k);
+      energy += 0.5 * p.normal_stiffness * contact.gap * contact.gap +
+                0.5 * contact.tangential_force.squaredNorm() / p.tangential_stiffness;
     }
+  }
   return energy;
 }
 

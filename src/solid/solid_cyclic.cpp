@@ -288,10 +288,12 @@ std::vector<double> contact_pressure(const SolidBody& body) {
         // the contact, so the pressure is the pass's force x passes over the area
         const double passes = contact->pass_count();
         const double area = stiffness[i] / penalty * passes;
-        if (states[i].in_contact && area > 0.0) {
-          double& p = pressure[static_cast<std::size_t>(nodes[i])];
-          p = std::max(p, states[i].normal_force * passes / area);
-        }
+        if (!(area > 0.0))
+          continue;
+        // a node in a concave corner presses on each of its faces: the largest pressure
+        double& p = pressure[static_cast<std::size_t>(nodes[i])];
+        for (int k = 0; k < states[i].contact_count; ++k)
+          p = std::max(p, states[i].contact(k).normal_force * passes / area);
       }
     }
   }

@@ -19,9 +19,15 @@
 //    material::PenaltyFriction (committed slip zero: the anchor carries the slip) for the
 //    Coulomb return map and its dissipation. On slip the anchor moves by the slip increment,
 //    x_a + s_1 e_1 + s_2 e_2, projected back on the master surface: the anchor can cross to
-//    another face (the core slides along the whole casing) and T = k_T u holds again with the
-//    new anchor (a moved anchor that falls off the master surface's free edge restarts at the
-//    contact point: the next step starts from T = 0 there).
+//    another face of the contact's normal cluster (the core slides along the whole casing) and
+//    T = k_T u holds again with the new anchor. Only faces of that cluster (see Corners): the
+//    projection of x_a + slip on a flat cluster moves nothing in its plane, so the anchor lands
+//    on the target, the next step's spring is T / k_T, and the credited friction work T . slip
+//    is exactly the work of T minus the change of 1/2 |T|^2 / k_T (steady sliding: T . dx).
+//    Projected on the other face of a corner, the anchor would land off the target, and the
+//    next step would read the offset as slip and credit kappa N x offset that no force did work
+//    for. A target beyond the cluster's faces (a free edge) restarts the contact at the contact
+//    point with T = 0, the trial spring energy 1/2 k_T |u|^2 credited as friction work.
 //    Force: T = T_1 e_1 + T_2 e_2; T on s, -T N_b(xi_a) on the anchor face (internal-force
 //    sense: the spring pulls the slave back towards its anchor).
 //    Stored energy 1/2 |T|^2 / k_T = 1/2 k_T |u|^2 in stick; its exact gradient also has the
@@ -38,8 +44,21 @@
 //    of the master body (a casing node at the mouth once the core has slid out from under it,
 //    or a casing node under the core's bearing face, which lies on the plane of the side faces'
 //    edges, would otherwise 'penetrate' a side face by the core's half-width).
-//  - Open (g >= 0 or no face): no force; the anchor is dropped (a new contact starts with
-//    T = 0, PenaltyFriction (F6)); the node's dissipated energy is kept.
+//  - Corners: master faces whose outward normals make less than 45 degrees with a contact's
+//    normal are its normal cluster (coplanar neighbours, a crease as above, a warped face). The
+//    node's first contact is its nearest face (as above); when it penetrates it, each further
+//    cluster adds its nearest penetrated face that forms a valley with every face taken (each
+//    face's centroid in front of the other's tangent plane at its contact point): a node in a
+//    concave corner (a core corner in the corner of the casing's opening) is pushed out of each
+//    face, N_i = k_N <-g_i>, with its own anchor and Coulomb state (at most kMaxFaceContacts).
+//    The stored energy is the sum over the contacts, so in stick the force is still its exact
+//    gradient. At a convex corner (centroids behind) the nearest face alone pushes the node out
+//    (the shortest way out of the master body). A committed contact continues in the trial
+//    contact of its cluster (the closest normal).
+//  - Open (g >= 0 or no face), or a contact that leaves its cluster: no force; the anchor is
+//    dropped (a new contact starts with T = 0, PenaltyFriction (F6)) and the spring's energy
+//    1/2 |T|^2 / k_T is credited as friction work (it relaxes by slipping as the contact ends);
+//    the node's dissipated energy is kept.
 //
 // Search: master faces in buckets along the master surface's longest axis (face_buckets.hpp),
 // rebuilt when a master node has moved by more than half a bucket since the last build. For
@@ -52,10 +71,11 @@
 //
 // Trial / commit as SolidInteraction: add_force() writes trial states only, commit() accepts
 // them. Threads (set_threads): the slave nodes are shared among threads in contiguous blocks,
-// each node writes only its own record (at most 14 contributions on 9 nodes, its search counts),
-// and the records are added to the force vector in node order by one thread, so results are
-// bitwise the same for every thread count. Two-pass mode: each surface is also the master of the
-// other's nodes, with half the penalty in each pass (symmetric treatment, no preferred surface).
+// each node writes only its own record (per contact at most 14 contributions on 9 nodes; its
+// search counts), and the records are added to the force vector in node order by one thread,
+// so results are bitwise the same for every thread count. Two-pass mode: each surface is also the
+// master of the other's nodes, with half the penalty in each pass (symmetric treatment, no
+// preferred surface).
 #pragma once
 
 #include "brb/material/penalty_friction.hpp"
@@ -85,10 +105,18 @@ struct NodeToSurfaceContactSettings {
   void validate() const;
 };
 
-/// The contact of one slave node (committed or trial).
-struct NodeContactState {
-  bool in_contact = false;
-  bool slipping = false;
+/// At most this many contacts per slave node: one per cluster of master-face normals, so a node
+/// in a concave corner (valley) of the master surface is pushed out of each face it penetrates
+/// (two faces of a prismatic opening's corner, three at a box's inner corner).
+inline constexpr int kMaxFaceContacts = 3;
+
+/// Master faces whose outward normals make less than 45 degrees with a contact's normal belong
+/// to its cluster: coplanar neighbours, a slight crease or a warped face, but not the other
+/// face of a right-angled corner. cos(45 deg).
+inline constexpr double kNormalClusterCosine = 0.70710678118654752;
+
+/// One contact of a slave node with a master face (committed or trial).
+struct FaceContact {
   int face = -1;                                              ///< master face of the contact point
   Eigen::Vector2d natural = Eigen::Vector2d::Zero();          ///< its natural coordinates
   double gap = 0.0;                                           ///< g (mm), < 0 in contact
@@ -97,7 +125,27 @@ struct NodeContactState {
   Eigen::Vector3d tangential_force = Eigen::Vector3d::Zero(); ///< T (N); the slave gets -T
   int anchor_face = -1;                                       ///< stick anchor (master face)
   Eigen::Vector2d anchor_natural = Eigen::Vector2d::Zero();
+};
+
+/// The contact of one slave node (committed or trial). Its first contact (the nearest face's)
+/// is the inherited FaceContact, where single-face users read it; a node in a concave corner
+/// has its further contacts (one per further normal cluster) in corner_contacts.
+struct NodeContactState : FaceContact {
+  bool in_contact = false; ///< contact_count > 0
+  bool slipping = false;   ///< any of its contacts slips
+  int contact_count = 0;   ///< 0 open, 1 one face, 2 or 3 a concave corner
+  std::array<FaceContact, kMaxFaceContacts - 1> corner_contacts{};
   double dissipated_energy = 0.0; ///< friction work of this node since the start (N mm)
+
+  /// Contact k < contact_count: 0 the nearest face's, then the corner's further ones.
+  const FaceContact& contact(int k) const {
+    return k == 0 ? static_cast<const FaceContact&>(*this)
+                  : corner_contacts[static_cast<std::size_t>(k - 1)];
+  }
+  FaceContact& contact(int k) {
+    return k == 0 ? static_cast<FaceContact&>(*this)
+                  : corner_contacts[static_cast<std::size_t>(k - 1)];
+  }
 };
 
 /// What the last add_force() did (the search's cost) and how often the buckets were built.
@@ -107,6 +155,7 @@ struct ContactStatistics {
   long bucket_builds = 0;         ///< since construction
   int nodes_in_contact = 0;       ///< trial
   int nodes_slipping = 0;         ///< trial
+  int nodes_in_corners = 0;       ///< trial: nodes touching faces of more than one normal cluster
 };
 
 class NodeToSurfaceContact final : public SolidInteraction {
@@ -146,9 +195,17 @@ public:
   const std::vector<NodeContactState>& trial_states(int pass) const;
 
 private:
+  /// A master face on which a point projects (see collect_hits).
+  struct Hit {
+    int face = -1;
+    QuadProjection projection;
+  };
+
   /// What one slave node adds to the force vector, and what its search cost.
   struct NodeRecord {
-    static constexpr int kCapacity = 16; // slave, contact face (normal, rotation), anchor face
+    // per contact: slave (normal + friction, rotation), contact face (normal, rotation),
+    // anchor face
+    static constexpr int kCapacity = 16 * kMaxFaceContacts;
     int count = 0;
     std::array<int, kCapacity> node{};
     std::array<Eigen::Vector3d, kCapacity> value;
@@ -156,6 +213,7 @@ private:
     long box_tests = 0;
     bool failed = false;
     std::string reason;
+    std::vector<Hit> hits; // of the last collect_hits (kept: no allocation once grown)
 
     void add(int at, const Eigen::Vector3d& force) {
       node[static_cast<std::size_t>(count)] = at;
@@ -182,16 +240,25 @@ private:
   static Pass make_pass(const Eigen::Matrix3Xd& reference, const std::vector<QuadFace>& slave,
                         std::vector<QuadFace> master, double penalty,
                         const NodeToSurfaceContactSettings& settings);
-  /// The master face nearest `point` (smallest |gap|) among those of its bucket within
-  /// search_distance on which it projects inside; when there is none, the nearest on which
-  /// it projects at most 0.05 (natural) beyond an edge. Faces holding `own_node` (the slave
-  /// itself, when the surfaces share nodes) are skipped. face -1 when none.
-  struct Hit {
-    int face = -1;
-    QuadProjection projection;
-  };
-  Hit nearest_face(const Pass& pass, const Configuration& configuration,
-                   const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
+  /// Into record.hits, in the bucket's order: the master faces of `point`'s bucket within
+  /// search_distance on which it projects inside or at most 0.05 (natural) beyond an edge, but
+  /// not beside a convex edge. Faces holding `own_node` (the slave itself, when the surfaces
+  /// share nodes) are skipped.
+  void collect_hits(const Pass& pass, const Configuration& configuration,
+                    const Eigen::Vector3d& point, int own_node, NodeRecord& record) const;
+  /// The node's contacts among `hits` into `contacts` (the nearest face, then at a concave
+  /// corner one face per further normal cluster; see the header comment); returns their count,
+  /// 0 when the nearest face is not penetrated.
+  int select_contacts(const Pass& pass, const Configuration& configuration,
+                      const std::vector<Hit>& hits,
+                      std::array<Hit, kMaxFaceContacts>& contacts) const;
+  /// (C2), (C4), (C5) of one contact into `record` (node_to_surface_contact.cpp):
+  /// normal_offset = (x_s - x_a) . n.
+  static void add_contact_forces(NodeRecord& record, int slave, const QuadPoint& contact,
+                                 const QuadFace& contact_face, const QuadFace& anchor_nodes,
+                                 const Eigen::Vector2d& anchor_natural, double N,
+                                 const Eigen::Vector3d& T, double normal_offset, double gap,
+                                 double k_T);
   /// Rebuilds the pass's buckets when a master node moved by more than half a bucket.
   void update_buckets(Pass& pass, const Configuration& configuration);
   /// The trial contact of slave `i` of `pass` into pass.trial[i] and pass.records[i] (its
