@@ -109,6 +109,14 @@ void write_run(std::ostringstream& out, const SpecimenOutcome& specimen, const R
   out << "- " << (run.completed ? "completed" : "**stopped early**") << ": " << run.steps << " of "
       << run.planned_steps << " steps, " << run.iterations << " Newton iterations, " << std::fixed
       << std::setprecision(1) << run.run_seconds << std::defaultfloat << " s\n";
+  if (const auto& record = specimen.specimen.record; record && record->run_seconds) {
+    out << "- the reference `brb solid` run took " << std::fixed << std::setprecision(1)
+        << *record->run_seconds << std::defaultfloat << " s";
+    if (run.run_seconds > 0.0)
+      out << ": " << significant(*record->run_seconds / run.run_seconds, 3)
+          << " times this run (same machine only if both were measured on it)";
+    out << "\n";
+  }
   if (!run.completed)
     out << "- stop reason: " << run.stop_reason << "\n";
   out << "- energy-balance relative error " << significant(run.energy_balance_error, 3)
@@ -199,9 +207,11 @@ Json reference_json(const Specimen& specimen) {
                                  ? Json(nullptr)
                                  : Json(reference.failure->cycle)}};
   }
-  return Json{{"type", to_string(reference.type)},
-              {"source", reference.written},
-              {"failure", std::move(failure)}};
+  return Json{
+      {"type", to_string(reference.type)},
+      {"source", reference.written},
+      {"failure", std::move(failure)},
+      {"run_seconds", reference.run_seconds ? Json(*reference.run_seconds) : Json(nullptr)}};
 }
 
 Json check_json(const CheckResult& check) {

@@ -298,6 +298,14 @@ RecordReference read_record(const JsonValue& value, const fs::path& directory,
     if (!fs::is_regular_file(record.source.file))
       throw written.error("the run directory has no hysteresis.csv: " +
                           record.source.file.string());
+    // its run time, when the run wrote one (a summary is optional: the failure is stated)
+    const fs::path summary = run / "summary.json";
+    if (fs::is_regular_file(summary)) {
+      const nlohmann::json document = io::read_json_file(summary);
+      const nlohmann::json::json_pointer seconds("/solid/run_seconds");
+      if (document.contains(seconds) && document.at(seconds).is_number())
+        record.run_seconds = document.at(seconds).get<double>();
+    }
     break;
   }
   }

@@ -39,6 +39,7 @@ using brb::validation::FailureEvent;
 using brb::validation::FailureMode;
 using brb::validation::PreparedSpecimen;
 using brb::validation::RunData;
+using brb::validation::Specimen;
 using nlohmann::json;
 
 // The bare plate core of the examples (Py = 275 x 400 = 110000 N), coarser (6 elements,
@@ -251,6 +252,32 @@ TEST_F(ReferenceTypes, SolidRunOfTheSameHistoryGivesZeroErrorForEveryMetric) {
     }
   }
   EXPECT_EQ(*checks.back().value, 1.0); // the same failure mode, in the same cycle
+}
+
+TEST_F(ReferenceTypes, SolidRunKeepsItsRunTimeForTheReport) {
+  // A `brb solid` summary carries solid.run_seconds: the specimen keeps it (the report sets it
+  // against the model's run time); a summary without that key leaves it unknown.
+  write_solid_run("solid_timed");
+  json summary = json::parse(read_file(root() / "solid_timed" / "summary.json"));
+  summary["solid"] = {{"run_seconds", 123.5}};
+  scratch_->write("solid_timed/summary.json", summary.dump(2));
+  const json reference = {{"type", "solid_run"},
+                          {"directory", "../solid_timed"},
+                          {"failure", failure_of(model_failure())}};
+  const Specimen timed = brb::validation::read_specimen(
+      write_specimen("timed_solid", reference, every_metric(1.0)), root());
+  ASSERT_TRUE(timed.record.has_value());
+  ASSERT_TRUE(timed.record->run_seconds.has_value());
+  EXPECT_EQ(*timed.record->run_seconds, 123.5);
+
+  write_solid_run("solid_untimed");
+  const json untimed_reference = {{"type", "solid_run"},
+                                  {"directory", "../solid_untimed"},
+                                  {"failure", failure_of(model_failure())}};
+  const Specimen untimed = brb::validation::read_specimen(
+      write_specimen("untimed_solid", untimed_reference, every_metric(1.0)), root());
+  ASSERT_TRUE(untimed.record.has_value());
+  EXPECT_FALSE(untimed.record->run_seconds.has_value());
 }
 
 TEST_F(ReferenceTypes, SolverCsvInKilonewtonsAndInchesGivesZeroErrorForEveryMetric) {

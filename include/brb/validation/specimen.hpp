@@ -79,6 +79,10 @@ struct RecordReference {
   double path_tolerance_dy = 0.1;
   /// The failure mode and cycle the reference states ("failure"), for record_failure_mode.
   std::optional<FailureEvent> failure;
+  /// solid_run: the 3D run's wall-clock time (its summary.json's solid.run_seconds, when the
+  /// directory has one), which the report sets against the model's run time (issue 6: both run
+  /// times and their ratio).
+  std::optional<double> run_seconds;
 };
 
 struct Specimen {
