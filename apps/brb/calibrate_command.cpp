@@ -8,6 +8,7 @@
 #include "brb/io/json_input.hpp"
 #include "brb/validation/record_comparison.hpp"
 #include "brb/validation/record_protocol.hpp"
+#include "brb/validation/specimen.hpp"
 #include "brb/validation/steel_calibration.hpp"
 
 #include <nlohmann/json.hpp>
@@ -55,16 +56,17 @@ io::ForceRecordReference read_reference(const fs::path& file,
   } else if (const auto found = io::find_shared_directory(base)) {
     shared = *found;
   }
-  if (document.is_object() && document.contains("reference")) {
-    const io::JsonValue reference = *root.find("reference");
-    const std::string file_name = reference.json().value("file", std::string());
-    if (file_name.starts_with("shared:") && shared.empty()) {
-      throw reference.error("a \"shared:\" path, but no ancestor of the file's directory has a "
-                            "'shared' directory: give --shared DIR");
-    }
-    return io::read_force_record_reference(reference, base, shared);
+  const io::JsonValue reference =
+      document.is_object() && document.contains("reference") ? *root.find("reference") : root;
+  const std::string file_name =
+      reference.json().is_object() ? reference.json().value("file", std::string()) : std::string();
+  if (file_name.starts_with("shared:") && shared.empty()) {
+    throw reference.error("a \"shared:\" path, but no ancestor of the file's directory has a "
+                          "'shared' directory: give --shared DIR");
   }
-  return io::read_force_record_reference(root, base, shared);
+  // any reference type of a metrics.json (lab_record by default, solid_run, solver_csv, with
+  // its stated failure), read as brb validate reads it
+  return validation::read_record_reference(reference, base, shared).source;
 }
 
 } // namespace
@@ -79,8 +81,8 @@ CLI::App* add_calibrate_command(CLI::App& app, CalibrateCommand& command) {
   calibrate
       ->add_option("--record", command.record,
                    "JSON file with the record reference: a validation metrics.json (its "
-                   "\"reference\") or a bare reference object {file, columns, units, "
-                   "exclude_rows}")
+                   "\"reference\", of any type: lab_record, solid_run, solver_csv) or a bare "
+                   "reference object {file, columns, units, exclude_rows}")
       ->type_name("RECORD.json")
       ->required();
   calibrate->add_option("--out", command.output, "Calibrated parameters and errors (JSON)")

@@ -350,6 +350,11 @@ void read_comparison(const JsonValue& value, RecordReference& record) {
 
 } // namespace
 
+RecordReference read_record_reference(const JsonValue& value, const fs::path& directory,
+                                      const fs::path& shared_directory) {
+  return read_record(value, directory, shared_directory);
+}
+
 std::string to_string(ReferenceType type) {
   switch (type) {
   case ReferenceType::lab_record:

@@ -92,6 +92,32 @@ TEST(CalibrateCli, FitsASyntheticRecordAndWritesParametersAndProtocol) {
   }
 }
 
+TEST(CalibrateCli, TakesAMetricsReferenceWithItsTypeAndStatedFailure) {
+  // A validation metrics.json's reference as brb validate reads it: "type" and "failure" are
+  // part of the schema (validation/README.md), not unknown keys.
+  ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", kBrace);
+  scratch.write("record.csv", synthetic_record());
+  const auto reference = scratch.write("metrics.json", R"({"reference": {"type": "lab_record",
+      "file": "record.csv", "failure": {"failure_mode": "none"},
+      "columns": {"force": "Force[kip]", "deformation": "Deformation[in]"},
+      "units": {"force": "kip", "length": "in"}}})");
+  const auto params = scratch.path() / "params.json";
+  const CliRun run =
+      run_brb("calibrate " + shell_quoted(brace.string()) + " --record " +
+              shell_quoted(reference.string()) + " --out " + shell_quoted(params.string()));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(std::filesystem::exists(params));
+
+  const auto unknown = scratch.write("unknown.json", R"({"reference": {"type": "abaqus_odb",
+      "file": "record.csv"}})");
+  const CliRun refused =
+      run_brb("calibrate " + shell_quoted(brace.string()) + " --record " +
+              shell_quoted(unknown.string()) + " --out " + shell_quoted(params.string()));
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("/reference/type"), std::string::npos) << refused.err;
+}
+
 TEST(CalibrateCli, RejectsABadRecordReferenceWithExitTwoAndWritesNothing) {
   ScratchDirectory scratch;
   const auto brace = scratch.write("brace.json", kBrace);

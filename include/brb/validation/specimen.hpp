@@ -6,6 +6,7 @@
 #pragma once
 
 #include "brb/io/force_record.hpp"
+#include "brb/io/json_input.hpp"
 #include "brb/validation/failure_mode.hpp"
 
 #include <nlohmann/json.hpp>
@@ -113,6 +114,14 @@ inline constexpr const char* shared_prefix = "shared:";
 /// (their content is read by the run). Throws io::InputError.
 Specimen read_specimen(const std::filesystem::path& directory,
                        const std::filesystem::path& shared_directory);
+
+/// A metrics.json "reference" object on its own (any type: lab_record, solid_run, solver_csv;
+/// schema in validation/README.md), its files resolved against `directory` and "shared:"
+/// paths against `shared_directory`, e.g. for `brb calibrate --record`. Throws
+/// io::InputError naming the JSON path.
+RecordReference read_record_reference(const io::JsonValue& value,
+                                      const std::filesystem::path& directory,
+                                      const std::filesystem::path& shared_directory);
 
 /// The specimen folders under `validation_directory`: its sub-directories that hold a
 /// metrics.json, sorted by name. Throws io::InputError when `validation_directory` is not a
