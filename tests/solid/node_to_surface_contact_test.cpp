@@ -6,6 +6,8 @@
 #include "brb/material/parameter_error.hpp"
 #include "brb/solid/node_to_surface_contact.hpp"
 
+#include "support/contact_checks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -69,41 +71,11 @@ NodeToSurfaceContactSettings settings_with(double penalty, double ratio, double 
   return settings;
 }
 
-/// add_force from zero; fails the test when the contact refuses the state.
-Eigen::VectorXd force_at(NodeToSurfaceContact& contact, const Eigen::VectorXd& u) {
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(u.size());
-  std::string reason;
-  EXPECT_TRUE(contact.add_force(u, force, reason)) << reason;
-  return force;
-}
+using brb::testing::contact_force_at;
+using brb::testing::expect_force_is_the_energy_gradient;
 
 Eigen::Vector3d node_force(const Eigen::VectorXd& force, int node) {
   return force.segment<3>(3 * node);
-}
-
-/// Central differences of the trial stored energy on every DOF against `force` (the force
-/// of add_force at u), in stick: step 1e-6 mm, truncation O(1e-12) of the forces.
-void expect_force_is_the_energy_gradient(NodeToSurfaceContact& contact, const Eigen::VectorXd& u,
-                                         const Eigen::VectorXd& force) {
-  const double h = 1e-6;
-  Eigen::VectorXd numerical = Eigen::VectorXd::Zero(u.size());
-  for (Eigen::Index dof = 0; dof < u.size(); ++dof) {
-    Eigen::VectorXd plus = u, minus = u;
-    plus[dof] += h;
-    minus[dof] -= h;
-    force_at(contact, plus);
-    ASSERT_EQ(contact.statistics().nodes_slipping, 0);
-    const double energy_plus = contact.trial_stored_energy();
-    force_at(contact, minus);
-    const double energy_minus = contact.trial_stored_energy();
-    numerical[dof] = (energy_plus - energy_minus) / (2.0 * h);
-  }
-  const double largest = force.cwiseAbs().maxCoeff();
-  EXPECT_LT((force - numerical).cwiseAbs().maxCoeff(), 1e-7 * largest)
-      << "analytic\n"
-      << force.transpose() << "\nnumerical\n"
-      << numerical.transpose();
-  EXPECT_NEAR(force.sum(), 0.0, 1e-9 * largest); // equilibrium of the interaction
 }
 
 TEST(NodeToSurfaceContact, SourceContactPairHasNoForceUntilTheGapClosesThenKNTimesPenetration) {
@@ -116,7 +88,7 @@ TEST(NodeToSurfaceContact, SourceContactPairHasNoForceUntilTheGapClosesThenKNTim
     EXPECT_NEAR(k, 1000.0, 1e-11); // the area by 2 x 2 Gauss points: exact up to round-off
   for (int step = 0; step <= 60; ++step) {
     const double w = 0.25 * std::min(step, 50) / 50.0; // ramp, then held for 10 steps
-    const Eigen::VectorXd force = force_at(contact, pair.slave_moved({0.0, 0.0, -w}));
+    const Eigen::VectorXd force = contact_force_at(contact, pair.slave_moved({0.0, 0.0, -w}));
     const double penetration = std::max(0.0, w - 0.12);
     for (int n : pair.slave_nodes) {
       // internal-force sense: the master pushes the slave up, so its entry is -N
@@ -161,12 +133,12 @@ TEST(NodeToSurfaceContact, ForceIsMinusTheGradientOfTheStoredEnergyInStick) {
     u.segment<3>(3 * n) =
         projection.point.position - pair.nodes.col(n) - 0.05 * projection.point.normal;
   }
-  force_at(contact, u);
+  contact_force_at(contact, u);
   ASSERT_EQ(contact.statistics().nodes_in_contact, 4);
   contact.commit(); // anchors at the first contact points
   for (int n : pair.slave_nodes)
     u.segment<3>(3 * n) += Eigen::Vector3d(0.008, -0.006, 0.0);
-  const Eigen::VectorXd force = force_at(contact, u);
+  const Eigen::VectorXd force = contact_force_at(contact, u);
   ASSERT_EQ(contact.statistics().nodes_in_contact, 4);
   ASSERT_EQ(contact.statistics().nodes_slipping, 0);
   double tangential = 0.0;
@@ -186,10 +158,10 @@ TEST(NodeToSurfaceContact, ForceIsTheEnergyGradientWithTheAnchorOnAnotherFace) {
   const Pair pair(2, 1, 5.0, {4.996, 1.0}, 0.002, 0.0);
   NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master, settings_with(800.0, 1.3, 0.5));
   Eigen::VectorXd u = pair.slave_moved({0, 0, -0.05});
-  force_at(contact, u);
+  contact_force_at(contact, u);
   contact.commit();
   u = pair.slave_moved({0.005, 0, -0.05});
-  const Eigen::VectorXd force = force_at(contact, u);
+  const Eigen::VectorXd force = contact_force_at(contact, u);
   ASSERT_EQ(contact.statistics().nodes_slipping, 0);
   for (const NodeContactState& state : contact.trial_states(0)) {
     ASSERT_EQ(state.face, 1);
@@ -210,12 +182,12 @@ TEST(NodeToSurfaceContact, SticksWithKTUThenSlidesAtKappaNAndDissipatesKappaNTim
   NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master,
                                settings_with(penalty, ratio, kappa));
   const double k_N = penalty * 1.0, k_T = ratio * k_N, N = k_N * press;
-  force_at(contact, pair.slave_moved({0, 0, -press}));
+  contact_force_at(contact, pair.slave_moved({0, 0, -press}));
   contact.commit();
   const double stick_limit = kappa * N / k_T; // 0.001 mm
   for (int step = 1; step <= 40; ++step) {
     const double push = 0.000097 * step; // no step lands on the stick limit itself
-    const Eigen::VectorXd force = force_at(contact, pair.slave_moved({push, 0, -press}));
+    const Eigen::VectorXd force = contact_force_at(contact, pair.slave_moved({push, 0, -press}));
     const double expected = std::min(k_T * push, kappa * N);
     for (int n : pair.slave_nodes) {
       EXPECT_NEAR(node_force(force, n).x(), expected, 1e-10) << "push " << push;
@@ -227,7 +199,7 @@ TEST(NodeToSurfaceContact, SticksWithKTUThenSlidesAtKappaNAndDissipatesKappaNTim
     EXPECT_NEAR(contact.dissipated_energy(), 4 * kappa * N * slip, 1e-12);
   }
   const Eigen::VectorXd back =
-      force_at(contact, pair.slave_moved({0.000097 * 40 - 0.0005, 0, -press}));
+      contact_force_at(contact, pair.slave_moved({0.000097 * 40 - 0.0005, 0, -press}));
   for (int n : pair.slave_nodes)
     EXPECT_NEAR(node_force(back, n).x(), kappa * N - k_T * 0.0005, 1e-10);
   EXPECT_EQ(contact.statistics().nodes_slipping, 0);
@@ -242,14 +214,15 @@ TEST(NodeToSurfaceContact, SlidingAcrossAFaceBoundaryKeepsKappaNWithoutAJump) {
   NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master,
                                settings_with(penalty, 1.0, kappa));
   const double N = penalty * 0.25 * press; // tributary area 1/4 mm^2
-  force_at(contact, pair.slave_moved({0, 0, -press}));
+  contact_force_at(contact, pair.slave_moved({0, 0, -press}));
   contact.commit();
   std::vector<double> previous(4, 0.0);
   bool sliding = false;
   int sliding_steps = 0;
   double largest_jump = 0.0;
   for (int step = 1; step <= 600; ++step) {
-    const Eigen::VectorXd force = force_at(contact, pair.slave_moved({0.01 * step, 0, -press}));
+    const Eigen::VectorXd force =
+        contact_force_at(contact, pair.slave_moved({0.01 * step, 0, -press}));
     ASSERT_EQ(contact.statistics().nodes_in_contact, 4);
     const bool was_sliding = sliding;
     sliding = sliding || contact.statistics().nodes_slipping == 4;
@@ -282,7 +255,7 @@ TEST(NodeToSurfaceContact, APenetratingNodeUnderAValleyCreaseIsNotLost) {
   const Pair pair(2, 1, 10.0, {10.0, 4.0}, 1.0, -0.2,
                   [](int i, int) { return i == 1 ? 0.0 : 1.0; });
   NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master, settings_with(1000, 1, 0.1));
-  const Eigen::VectorXd force = force_at(contact, pair.slave_moved({0, 0, 0}));
+  const Eigen::VectorXd force = contact_force_at(contact, pair.slave_moved({0, 0, 0}));
   EXPECT_EQ(contact.statistics().nodes_in_contact, 4);
   const double k_N = 1000.0 * 0.25;
   for (int k : {0, 1}) { // the slave nodes at x = 10
@@ -304,7 +277,7 @@ TEST(NodeToSurfaceContact, ANodeBesideAConvexEdgeIsNotInContact) {
   const std::vector<QuadFace> master{{0, 1, 2, 3}};
   const std::vector<QuadFace> slave{{4, 5, 6, 7}};
   NodeToSurfaceContact contact(nodes, slave, master, settings_with(1000.0, 1, 0.1, 10.0));
-  const Eigen::VectorXd force = force_at(contact, Eigen::VectorXd::Zero(24));
+  const Eigen::VectorXd force = contact_force_at(contact, Eigen::VectorXd::Zero(24));
   EXPECT_EQ(contact.statistics().nodes_in_contact, 0);
   EXPECT_EQ(force.norm(), 0.0);
 }
@@ -325,7 +298,7 @@ TEST(NodeToSurfaceContact, ANodeUnderTheBearingFaceIsNotTakenBySideFaceAtItsEdge
   const std::vector<QuadFace> master{{0, 1, 2, 3}, {4, 5, 6, 7}};
   const std::vector<QuadFace> slave{{8, 9, 10, 11}};
   NodeToSurfaceContact contact(nodes, slave, master, settings_with(1000.0, 1, 0.1, 10.0));
-  const Eigen::VectorXd force = force_at(contact, Eigen::VectorXd::Zero(36));
+  const Eigen::VectorXd force = contact_force_at(contact, Eigen::VectorXd::Zero(36));
   EXPECT_EQ(contact.statistics().nodes_in_contact, 2);
   const double k_N = 1000.0 * 0.25 * (1.0 - 1e-8); // a quarter of the slave face's area
   for (int node : {8, 11}) {
@@ -358,8 +331,8 @@ TEST(NodeToSurfaceContact, RigidRotationOfEverythingRotatesTheForces) {
     Eigen::VectorXd u_rotated = u;
     for (int n = 0; n < pair.nodes.cols(); ++n)
       u_rotated.segment<3>(3 * n) = R * u.segment<3>(3 * n);
-    const Eigen::VectorXd f = force_at(original, u);
-    const Eigen::VectorXd f_rotated = force_at(rotated, u_rotated);
+    const Eigen::VectorXd f = contact_force_at(original, u);
+    const Eigen::VectorXd f_rotated = contact_force_at(rotated, u_rotated);
     EXPECT_EQ(original.statistics().nodes_in_contact, 4);
     slipping_steps += original.statistics().nodes_slipping > 0 ? 1 : 0;
     EXPECT_EQ(original.statistics().nodes_slipping, rotated.statistics().nodes_slipping);
@@ -387,12 +360,12 @@ TEST(NodeToSurfaceContact, SearchProjectsOnlyNearFacesAndFollowsALongSlide) {
   // never lost.
   const Pair pair(100, 1, 10.0, {500.0, 4.0}, 2.0, 50.0);
   NodeToSurfaceContact contact(pair.nodes, pair.slave, pair.master, settings_with(1000, 1, 0.1));
-  force_at(contact, pair.slave_moved({0, 0, 0}));
+  contact_force_at(contact, pair.slave_moved({0, 0, 0}));
   EXPECT_EQ(contact.statistics().projections_last_call, 0);
   EXPECT_EQ(contact.statistics().nodes_in_contact, 0);
 
   Eigen::VectorXd u = pair.slave_moved({0, 0, -50.01});
-  force_at(contact, u);
+  contact_force_at(contact, u);
   EXPECT_EQ(contact.statistics().nodes_in_contact, 4);
   EXPECT_LE(contact.statistics().projections_last_call, 4 * 2);
   EXPECT_LE(contact.statistics().box_tests_last_call, 4 * 4); // 100 faces, 4 per bucket
@@ -402,7 +375,7 @@ TEST(NodeToSurfaceContact, SearchProjectsOnlyNearFacesAndFollowsALongSlide) {
   for (int step = 1; step <= 300; ++step) {
     for (int n = 0; n < pair.master_node_count; ++n)
       u[3 * n] = -1.0 * step;
-    force_at(contact, u);
+    contact_force_at(contact, u);
     ASSERT_EQ(contact.statistics().nodes_in_contact, 4) << "step " << step;
     // a node on a face edge: 2 faces, and as many for its moved anchor (slipping)
     EXPECT_LE(contact.statistics().projections_last_call, 4 * (2 + 2));
@@ -440,8 +413,8 @@ TEST(NodeToSurfaceContact, TwoPassOnMatchingMeshesIsAsStiffAsOnePass) {
   NodeToSurfaceContact single(nodes, upper, lower, one);
   NodeToSurfaceContact twice(nodes, upper, lower, two);
   ASSERT_EQ(twice.pass_count(), 2);
-  const Eigen::VectorXd f1 = force_at(single, u);
-  const Eigen::VectorXd f2 = force_at(twice, u);
+  const Eigen::VectorXd f1 = contact_force_at(single, u);
+  const Eigen::VectorXd f2 = contact_force_at(twice, u);
   double upper_total_1 = 0.0, upper_total_2 = 0.0;
   for (int n = 9; n < 18; ++n) {
     upper_total_1 += f1[3 * n + 2];
@@ -470,7 +443,7 @@ TEST(NodeToSurfaceContact, ResultsDoNotDependOnTheThreadCount) {
     contact.set_threads(threads);
     std::vector<Eigen::VectorXd> forces;
     for (const Eigen::Vector3d& shift : history) {
-      forces.push_back(force_at(contact, pair.slave_moved(shift)));
+      forces.push_back(contact_force_at(contact, pair.slave_moved(shift)));
       contact.commit();
     }
     if (threads == 1) {

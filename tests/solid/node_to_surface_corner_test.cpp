@@ -7,6 +7,8 @@
 // at a convex corner, the single penalty of the nearest face (the shortest way out).
 #include "brb/solid/node_to_surface_contact.hpp"
 
+#include "support/contact_checks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,12 +69,8 @@ NodeToSurfaceContactSettings settings_with(double penalty, double ratio, double 
   return settings;
 }
 
-Eigen::VectorXd force_at(NodeToSurfaceContact& contact, const Eigen::VectorXd& u) {
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(u.size());
-  std::string reason;
-  EXPECT_TRUE(contact.add_force(u, force, reason)) << reason;
-  return force;
-}
+using brb::testing::contact_force_at;
+using brb::testing::expect_force_is_the_energy_gradient;
 
 TEST(NodeToSurfaceContactCorner, ANodeInAValleyIsPushedOutOfEachFaceByItsOwnPenalty) {
   // The crease nodes pressed 0.03 mm behind the wall and 0.02 mm under the floor: both
@@ -87,7 +85,7 @@ TEST(NodeToSurfaceContactCorner, ANodeInAValleyIsPushedOutOfEachFaceByItsOwnPena
   NodeToSurfaceContact contact(valley.nodes, valley.slave, valley.master,
                                settings_with(penalty, 1.0, 0.5));
   Eigen::VectorXd u = valley.slave_moved({-0.03, 0.0, -0.02});
-  Eigen::VectorXd force = force_at(contact, u);
+  Eigen::VectorXd force = contact_force_at(contact, u);
   EXPECT_EQ(contact.statistics().nodes_in_contact, 2);
   EXPECT_EQ(contact.statistics().nodes_in_corners, 2);
   for (int k = 0; k < 2; ++k) {
@@ -106,27 +104,10 @@ TEST(NodeToSurfaceContactCorner, ANodeInAValleyIsPushedOutOfEachFaceByItsOwnPena
   EXPECT_NEAR(contact.stored_energy(), 2 * 0.5 * k_N * (0.03 * 0.03 + 0.02 * 0.02), 1e-12);
 
   u = valley.slave_moved({-0.029, 0.002, -0.0185});
-  force = force_at(contact, u);
+  force = contact_force_at(contact, u);
   ASSERT_EQ(contact.statistics().nodes_slipping, 0);
   ASSERT_EQ(contact.statistics().nodes_in_corners, 2);
-  const double h = 1e-6;
-  Eigen::VectorXd numerical = Eigen::VectorXd::Zero(u.size());
-  for (Eigen::Index dof = 0; dof < u.size(); ++dof) {
-    Eigen::VectorXd plus = u, minus = u;
-    plus[dof] += h;
-    minus[dof] -= h;
-    force_at(contact, plus);
-    ASSERT_EQ(contact.statistics().nodes_slipping, 0);
-    const double energy_plus = contact.trial_stored_energy();
-    force_at(contact, minus);
-    numerical[dof] = (energy_plus - contact.trial_stored_energy()) / (2.0 * h);
-  }
-  const double largest = force.cwiseAbs().maxCoeff();
-  EXPECT_LT((force - numerical).cwiseAbs().maxCoeff(), 1e-7 * largest)
-      << "analytic\n"
-      << force.transpose() << "\nnumerical\n"
-      << numerical.transpose();
-  EXPECT_NEAR(force.sum(), 0.0, 1e-9 * largest);
+  expect_force_is_the_energy_gradient(contact, u, force);
 }
 
 TEST(NodeToSurfaceContactCorner, SlidingAlongAValleyDissipatesExactlyTheWorkOfTheForces) {
@@ -144,14 +125,14 @@ TEST(NodeToSurfaceContactCorner, SlidingAlongAValleyDissipatesExactlyTheWorkOfTh
   NodeToSurfaceContact contact(valley.nodes, valley.slave, valley.master,
                                settings_with(penalty, 1.0, kappa));
   Eigen::VectorXd u = valley.slave_moved({-wall, 0.0, -floor});
-  Eigen::VectorXd force = force_at(contact, u);
+  Eigen::VectorXd force = contact_force_at(contact, u);
   contact.commit();
   const int sliding_from = 10; // stick limits kappa g = 0.006 and 0.009 mm: 2 steps
   const int steps = 4000;
   double work = 0.0, stored_start = 0.0, dissipated_start = 0.0;
   for (int n = 1; n <= steps; ++n) {
     const Eigen::VectorXd u_next = valley.slave_moved({-wall, step * n, -floor});
-    const Eigen::VectorXd force_next = force_at(contact, u_next);
+    const Eigen::VectorXd force_next = contact_force_at(contact, u_next);
     ASSERT_EQ(contact.statistics().nodes_in_contact, 2) << "step " << n;
     contact.commit();
     if (n > sliding_from) {
@@ -191,7 +172,7 @@ TEST(NodeToSurfaceContactCorner, ANodeInsideAConvexCornerKeepsOnlyTheNearestFace
   const std::vector<QuadFace> slave{{8, 9, 10, 11}};
   const double penalty = 1000.0;
   NodeToSurfaceContact contact(all, slave, master, settings_with(penalty, 1.0, 0.5));
-  const Eigen::VectorXd force = force_at(contact, Eigen::VectorXd::Zero(36));
+  const Eigen::VectorXd force = contact_force_at(contact, Eigen::VectorXd::Zero(36));
   EXPECT_EQ(contact.statistics().nodes_in_contact, 2);
   EXPECT_EQ(contact.statistics().nodes_in_corners, 0);
   const double k_N = contact.normal_stiffness(0)[0];
@@ -212,14 +193,14 @@ TEST(NodeToSurfaceContactCorner, AnEndingContactCreditsItsSpringEnergyAsFriction
   const double penalty = 1000.0, ratio = 1.5, k_T = ratio * Valley::normal_stiffness(penalty);
   NodeToSurfaceContact contact(valley.nodes, valley.slave, valley.master,
                                settings_with(penalty, ratio, 0.5));
-  force_at(contact, valley.slave_moved({-0.03, 0.0, -0.02}));
+  contact_force_at(contact, valley.slave_moved({-0.03, 0.0, -0.02}));
   contact.commit();
-  force_at(contact, valley.slave_moved({-0.03, 0.004, -0.02}));
+  contact_force_at(contact, valley.slave_moved({-0.03, 0.004, -0.02}));
   ASSERT_EQ(contact.statistics().nodes_slipping, 0);
   ASSERT_EQ(contact.statistics().nodes_in_corners, 2);
   contact.commit();
   EXPECT_EQ(contact.dissipated_energy(), 0.0);
-  force_at(contact, valley.slave_moved({0.1, 0.004, 0.1}));
+  contact_force_at(contact, valley.slave_moved({0.1, 0.004, 0.1}));
   ASSERT_EQ(contact.statistics().nodes_in_contact, 0);
   contact.commit();
   EXPECT_EQ(contact.stored_energy(), 0.0);
@@ -241,7 +222,7 @@ TEST(NodeToSurfaceContactCorner, CornerContactsDoNotDependOnTheThreadCount) {
     contact.set_threads(threads);
     std::vector<Eigen::VectorXd> forces;
     for (int n = 0; n <= 40; ++n) {
-      forces.push_back(force_at(contact, valley.slave_moved({-0.03, 0.005 * n, -0.02})));
+      forces.push_back(contact_force_at(contact, valley.slave_moved({-0.03, 0.005 * n, -0.02})));
       contact.commit();
     }
     if (threads == 1) {
