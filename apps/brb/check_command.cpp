@@ -6,6 +6,7 @@
 #include "brb/design/check_input.hpp"
 #include "brb/design/check_report.hpp"
 #include "brb/io/atomic_file.hpp"
+#include "brb/io/csv.hpp"
 #include "brb/io/cyclic_output.hpp"
 
 #include <iomanip>
@@ -15,6 +16,8 @@
 namespace brb::cli {
 namespace {
 
+using io::significant;
+
 namespace fs = std::filesystem;
 
 constexpr int kCompleted = 0;
@@ -23,12 +26,6 @@ constexpr int kStoppedEarly = 1;
 constexpr const char* kHysteresisFile = "hysteresis.csv";
 constexpr const char* kCheckJsonFile = "check.json";
 constexpr const char* kCheckMarkdownFile = "check.md";
-
-std::string significant(double value, int digits) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
-  return text.str();
-}
 
 } // namespace
 

@@ -29,6 +29,8 @@
 namespace brb::cli {
 namespace {
 
+using io::significant;
+
 namespace fs = std::filesystem;
 
 constexpr int kCompleted = 0;
@@ -54,13 +56,6 @@ std::string count_of(std::size_t count, const std::string& noun) {
 
 std::string count_of(int count, const std::string& noun) {
   return count_of(static_cast<std::size_t>(count < 0 ? 0 : count), noun);
-}
-
-/// `value` with `digits` significant digits.
-std::string significant(double value, int digits) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
-  return text.str();
 }
 
 /// `value` with `decimals` digits after the point.

@@ -27,17 +27,13 @@
 namespace brb::cli {
 namespace {
 
+using io::significant;
+
 namespace fs = std::filesystem;
 
 constexpr int kCompleted = 0;
 constexpr int kStoppedEarly = 1;
 constexpr double kDefaultStepsPerYieldDeformation = 10.0;
-
-std::string significant(double value, int digits) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
-  return text.str();
-}
 
 /// energies.csv: one row per output record of the explicit run.
 io::NumericTable energy_table(const solid::SolidBraceRun& run) {

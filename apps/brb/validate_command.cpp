@@ -1,6 +1,7 @@
 #include "validate_command.hpp"
 
 #include "brb/io/atomic_file.hpp"
+#include "brb/io/csv.hpp"
 #include "brb/io/input_error.hpp"
 #include "brb/validation/contrast.hpp"
 #include "brb/validation/report.hpp"
@@ -24,6 +25,8 @@
 
 namespace brb::cli {
 namespace {
+
+using io::significant;
 
 namespace fs = std::filesystem;
 using namespace brb::validation;
@@ -81,12 +84,6 @@ void check_report_directory(const fs::path& report) {
 std::string seconds(double value) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << value << " s";
-  return text.str();
-}
-
-std::string significant(double value, int digits) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
   return text.str();
 }
 

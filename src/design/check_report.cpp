@@ -1,10 +1,13 @@
 #include "brb/design/check_report.hpp"
+#include "brb/io/csv.hpp"
 
 #include <iomanip>
 #include <sstream>
 
 namespace brb::design {
 namespace {
+
+using io::significant;
 
 nlohmann::ordered_json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
@@ -13,12 +16,6 @@ nlohmann::ordered_json optional_number(const std::optional<double>& value) {
 std::string fixed(double value, int decimals) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(decimals) << value;
-  return text.str();
-}
-
-std::string significant(double value, int digits) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
   return text.str();
 }
 

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -164,6 +166,12 @@ std::string format_number(double value) {
   if (status != std::errc{})
     throw std::logic_error("format_number: buffer too small");
   return std::string(buffer.data(), end);
+}
+
+std::string significant(double value, int digits) {
+  std::ostringstream text;
+  text << std::setprecision(digits) << value;
+  return text.str();
 }
 
 NumericTable::NumericTable(std::vector<std::string> columns) : columns_(std::move(columns)) {

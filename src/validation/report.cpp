@@ -1,4 +1,5 @@
 #include "brb/validation/report.hpp"
+#include "brb/io/csv.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -7,6 +8,11 @@
 
 namespace brb::validation {
 namespace {
+
+/// `value` with `digits` significant digits (6 by default).
+std::string significant(double value, int digits = 6) {
+  return io::significant(value, digits);
+}
 
 using Json = nlohmann::ordered_json;
 
@@ -22,13 +28,6 @@ void count(Tally& tally, CheckStatus status) {
     ++tally.reported;
     break;
   }
-}
-
-/// `value` with `digits` significant digits.
-std::string significant(double value, int digits = 6) {
-  std::ostringstream text;
-  text << std::setprecision(digits) << value;
-  return text.str();
 }
 
 std::string with_unit(double value, const std::string& unit) {

@@ -28,6 +28,10 @@ NumericColumn read_numeric_column(const std::filesystem::path& file, const std::
 /// The shortest decimal text that reads back to exactly `value` (std::to_chars).
 std::string format_number(double value);
 
+/// `value` with `digits` significant digits (iostream's default float format), for reports
+/// meant to be read, not read back.
+std::string significant(double value, int digits);
+
 /// A CSV table of numbers built in memory: a header line, then one line per row, '\n' line
 /// endings, every number at full (shortest round-trip) precision.
 class NumericTable {
