@@ -488,7 +488,6 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
     }
   }
   trial.contact_count = count;
-  trial.in_contact = count > 0;
   trial.dissipated_energy = dissipated;
 }
 
@@ -539,7 +538,7 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
             record.value[static_cast<std::size_t>(k)];
       statistics_.projections_last_call += record.projections;
       statistics_.box_tests_last_call += record.box_tests;
-      statistics_.nodes_in_contact += pass.trial[i].in_contact ? 1 : 0;
+      statistics_.nodes_in_contact += pass.trial[i].in_contact() ? 1 : 0;
       statistics_.nodes_slipping += pass.trial[i].slipping ? 1 : 0;
       statistics_.nodes_in_corners += pass.trial[i].contact_count > 1 ? 1 : 0;
     }

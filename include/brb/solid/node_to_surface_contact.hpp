@@ -131,12 +131,12 @@ struct FaceContact {
 /// is the inherited FaceContact, where single-face users read it; a node in a concave corner
 /// has its further contacts (one per further normal cluster) in corner_contacts.
 struct NodeContactState : FaceContact {
-  bool in_contact = false; ///< contact_count > 0
-  bool slipping = false;   ///< any of its contacts slips
-  int contact_count = 0;   ///< 0 open, 1 one face, 2 or 3 a concave corner
+  bool slipping = false; ///< any of its contacts slips
+  int contact_count = 0; ///< 0 open, 1 one face, 2 or 3 a concave corner
   std::array<FaceContact, kMaxFaceContacts - 1> corner_contacts{};
   double dissipated_energy = 0.0; ///< friction work of this node since the start (N mm)
 
+  bool in_contact() const { return contact_count > 0; }
   /// Contact k < contact_count: 0 the nearest face's, then the corner's further ones.
   const FaceContact& contact(int k) const {
     return k == 0 ? static_cast<const FaceContact&>(*this)
