@@ -100,5 +100,70 @@ TEST(CorotBeam3D, InelasticTangentMatchesFiniteDifferences) {
   EXPECT_GT(plastic, 0.0);
 }
 
+TEST(LocalBeam, AxialEquilibriumIsFoundWherePlainNewtonCyclesBetweenBranches) {
+  // A plate core in linear kinematic hardening (H = 3.3 % of E, UCSD G1: BRB_SOURCE_FACTS
+  // section 8), yielded in compression with weak-axis curvature, then driven to random
+  // trial deformations near its state. Its points cross between elastic and plastic
+  // branches at different strains, where Newton's method on the point strains can cycle
+  // (measured on G1: a period-4 cycle). Reference: equilibrium itself; every trial must
+  // give one axial force at every point (to the element's tolerance, 1e-10 of the force
+  // plus the force of a 1e-6 strain) and satisfy compatibility sum_k w_k e0_k = u / L0.
+  material::SteelParameters steel;
+  steel.youngs_modulus = 199948.0;
+  steel.poissons_ratio = 0.3;
+  steel.yield_stress = 255.106;
+  steel.kinematic_hardening = 6598.3;
+  const double length = 210.0;
+  const auto integration = BeamIntegration::make(IntegrationRule::gauss_lobatto, 3);
+  std::vector<section::FiberSection<material::SteelUniaxial>> sections;
+  for (std::size_t k = 0; k < integration.weights.size(); ++k) {
+    sections.emplace_back(section::mesh_rectangle(203.2, 38.1, 8, 4),
+                          material::SteelUniaxial(steel, integration.weights[k] * length), 76903.0);
+  }
+  LocalBeam<section::FiberSection<material::SteelUniaxial>> beam(length, integration,
+                                                                 std::move(sections));
+  const double yield_strain = 255.106 / 199948.0;
+  LocalVector deformation = LocalVector::Zero();
+  LocalVector force;
+  LocalMatrix tangent;
+  std::string failure;
+  // tension to 2 dy, back to compression at yield with a bending wave (theta about z of the
+  // 38.1 mm depth: opposite end rotations, the curvature of a buckling half-wave)
+  for (const auto& [strain, rotation] : {std::pair{2.0, 0.0}, std::pair{0.5, 0.004},
+                                         std::pair{-1.0, 0.008}, std::pair{-1.6, 0.012}}) {
+    deformation[0] = strain * yield_strain * length;
+    deformation[3] = rotation;
+    deformation[6] = -0.6 * rotation;
+    ASSERT_TRUE(beam.evaluate(deformation, force, tangent, failure)) << failure;
+    beam.commit();
+  }
+  std::mt19937 generator(20261123);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int evaluated = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    LocalVector trial_deformation = deformation;
+    trial_deformation[0] += 2.0 * yield_strain * length * unit(generator);
+    for (const int bend : {2, 3, 5, 6})
+      trial_deformation[bend] += 0.02 * unit(generator);
+    ASSERT_TRUE(beam.evaluate(trial_deformation, force, tangent, failure))
+        << "trial " << trial << ": " << failure;
+    ++evaluated;
+    double mean_strain = 0.0, force_scale = 0.0, stiffness_scale = 0.0;
+    for (std::size_t k = 0; k < integration.weights.size(); ++k) {
+      mean_strain += integration.weights[k] * beam.axial_strains()[k];
+      force_scale = std::max(force_scale, std::abs(beam.sections()[k].last_response().force[0]));
+      stiffness_scale =
+          std::max(stiffness_scale, std::abs(beam.sections()[k].last_response().tangent(0, 0)));
+    }
+    EXPECT_NEAR(mean_strain, trial_deformation[0] / length, 1e-12);
+    for (std::size_t k = 0; k < integration.weights.size(); ++k) {
+      EXPECT_NEAR(beam.sections()[k].last_response().force[0], force[0],
+                  1e-10 * (force_scale + 1e-6 * stiffness_scale))
+          << "trial " << trial << ", point " << k;
+    }
+  }
+  EXPECT_EQ(evaluated, 400);
+}
+
 } // namespace
 } // namespace brb::element

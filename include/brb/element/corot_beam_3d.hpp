@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -56,40 +57,25 @@ public:
     for (std::size_t k = 0; k < points; ++k)
       curvature[k] = curvature_at(k, deformation);
 
+    // Newton's method on the strains e0_k with N from the linearised compatibility. Its
+    // iterates can cycle where fibers cross between elastic and plastic branches (measured on
+    // UCSD G1 at 2 dy: a period-4 cycle of iterates swinging between +-5e6 N, against a
+    // force of 2e6 N); after kNewtonAxialIterations the bracketed solve takes over.
     double axial_force = 0.0;
     bool converged = false;
-    for (int iteration = 0; iteration < kMaxAxialIterations && !converged; ++iteration) {
-      // sections at the current axial strains
-      double flexibility = 0.0, mismatch = 0.0, force_scale = 0.0;
-      for (std::size_t k = 0; k < points; ++k) {
-        const auto& response = sections_[k].evaluate(
-            section::SectionVector(axial_strain_[k], curvature[k][0], curvature[k][1]));
-        const double stiffness = response.tangent(0, 0);
-        if (!(std::abs(stiffness) > 0.0) || !response.force.allFinite()) {
-          failure = "local beam: singular or non-finite axial section stiffness";
-          return false;
-        }
-        section_response_[k] = response;
-        axial_force_at_[k] = response.force[0];
-        axial_stiffness_at_[k] = stiffness;
-        flexibility += integration_.weights[k] / stiffness;
-        mismatch += integration_.weights[k] * (axial_force_at_[k] / stiffness - axial_strain_[k]);
-        force_scale = std::max(force_scale, std::abs(response.force[0]));
+    for (int iteration = 0; iteration < kNewtonAxialIterations && !converged; ++iteration) {
+      if (!evaluate_points(curvature, failure))
+        return false;
+      converged = equilibrium_reached(elongation, axial_force);
+      if (!converged) {
+        for (std::size_t k = 0; k < points; ++k)
+          axial_strain_[k] += (axial_force - axial_force_at_[k]) / axial_stiffness_at_[k];
       }
-      // N such that sum_k w_k (e0_k + (N - N_k)/a_k) = u_bar / L0
-      axial_force = (elongation / length_ + mismatch) / flexibility;
-      double worst = 0.0;
-      for (std::size_t k = 0; k < points; ++k) {
-        worst = std::max(worst, std::abs(axial_force_at_[k] - axial_force));
-      }
-      const double tolerance = 1e-10 * (force_scale + axial_force_scale());
-      if (worst <= tolerance) {
-        converged = true;
-        break;
-      }
-      for (std::size_t k = 0; k < points; ++k) {
-        axial_strain_[k] += (axial_force - axial_force_at_[k]) / axial_stiffness_at_[k];
-      }
+    }
+    if (!converged) {
+      for (std::size_t k = 0; k < points; ++k)
+        axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
+      converged = solve_axial_in_brackets(elongation, curvature, axial_force);
     }
     if (!converged) {
       failure = "local beam: axial equilibrium between integration points did not converge";
@@ -172,7 +158,139 @@ public:
   static constexpr std::size_t kMaxPoints = 6;
 
 private:
-  static constexpr int kMaxAxialIterations = 30;
+  static constexpr int kNewtonAxialIterations = 12;
+  static constexpr int kBracketIterations = 200;
+
+  /// Evaluates every section at its trial axial strain and the given curvatures.
+  bool evaluate_points(const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
+                       std::string& failure) {
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      if (!evaluate_point(k, axial_strain_[k], curvature[k])) {
+        failure = "local beam: singular or non-finite axial section stiffness";
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// Evaluates section k at axial strain `strain`; false if its axial stiffness is zero or
+  /// its forces are not finite.
+  bool evaluate_point(std::size_t k, double strain, const Eigen::Vector2d& curvature) {
+    axial_strain_[k] = strain;
+    const auto& response =
+        sections_[k].evaluate(section::SectionVector(strain, curvature[0], curvature[1]));
+    section_response_[k] = response;
+    axial_force_at_[k] = response.force[0];
+    axial_stiffness_at_[k] = response.tangent(0, 0);
+    return std::abs(axial_stiffness_at_[k]) > 0.0 && response.force.allFinite() &&
+           std::isfinite(axial_stiffness_at_[k]);
+  }
+
+  /// Tolerance on the axial force mismatch between points: 1e-10 of the largest force plus
+  /// the force of a strain of 1e-6 (axial_force_scale).
+  double axial_tolerance() const {
+    double force_scale = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      force_scale = std::max(force_scale, std::abs(axial_force_at_[k]));
+    return 1e-10 * (force_scale + axial_force_scale());
+  }
+
+  /// From the evaluated points: the N that satisfies the linearised compatibility,
+  /// sum_k w_k (e0_k + (N - N_k) / a_k) = u_bar / L0, and whether every N_k is within
+  /// tolerance of it.
+  bool equilibrium_reached(double elongation, double& axial_force) const {
+    double flexibility = 0.0, mismatch = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      flexibility += integration_.weights[k] / axial_stiffness_at_[k];
+      mismatch += integration_.weights[k] *
+                  (axial_force_at_[k] / axial_stiffness_at_[k] - axial_strain_[k]);
+    }
+    axial_force = (elongation / length_ + mismatch) / flexibility;
+    double worst = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      worst = std::max(worst, std::abs(axial_force_at_[k] - axial_force));
+    return worst <= axial_tolerance();
+  }
+
+  /// One step of Newton's method for a root of an increasing function, kept inside the
+  /// bracket [below, above] (the arguments where it was found negative and positive):
+  /// bisection when the Newton step leaves the bracket or the last step did not halve the
+  /// residual; without a bracket on one side, a step of at least `reach` towards it, doubled
+  /// each time.
+  static double bracketed_step(double argument, double value, double slope, double below,
+                               double above, bool stalled, double& reach) {
+    const bool bracketed = std::isfinite(below) && std::isfinite(above);
+    if (bracketed && stalled)
+      return 0.5 * (below + above);
+    const double newton = argument - value / slope;
+    if (slope > 0.0 && std::isfinite(newton) && newton > below && newton < above)
+      return newton;
+    if (bracketed)
+      return 0.5 * (below + above);
+    reach *= 2.0;
+    return value < 0.0 ? argument + reach : argument - reach;
+  }
+
+  /// Axial strain of point k at which its axial force is `target`. The section's axial
+  /// force increases with its axial strain while its fibers harden, so Newton's method in
+  /// a shrinking bracket converges where the plain iteration can cycle between branches.
+  bool match_point_force(std::size_t k, double target, const Eigen::Vector2d& curvature,
+                         double tolerance) {
+    double strain = axial_strain_[k];
+    double below = -std::numeric_limits<double>::infinity();
+    double above = std::numeric_limits<double>::infinity();
+    double reach = 1e-6, last_residual = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < kBracketIterations; ++iteration) {
+      if (!evaluate_point(k, strain, curvature))
+        return false;
+      const double residual = axial_force_at_[k] - target;
+      if (std::abs(residual) <= tolerance)
+        return true;
+      (residual < 0.0 ? below : above) = strain;
+      const bool stalled = std::abs(residual) > 0.5 * last_residual;
+      last_residual = std::abs(residual);
+      strain =
+          bracketed_step(strain, residual, axial_stiffness_at_[k], below, above, stalled, reach);
+      if (!(std::abs(strain) < 1.0)) // beyond 100 % strain: no such force
+        return false;
+    }
+    return false;
+  }
+
+  /// The axial equilibrium as a root in N: each point's strain e0_k(N) matches N
+  /// (match_point_force), and g(N) = sum_k w_k e0_k(N) - u_bar / L0, increasing with
+  /// dg/dN = sum_k w_k / a_k, is zero. Newton's method in a shrinking bracket on N; the
+  /// points are then in equilibrium to a quarter of the tolerance each way.
+  bool solve_axial_in_brackets(double elongation,
+                               const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
+                               double& axial_force) {
+    std::string unused;
+    if (!evaluate_points(curvature, unused))
+      return false;
+    equilibrium_reached(elongation, axial_force); // the starting N
+    double below = -std::numeric_limits<double>::infinity();
+    double above = std::numeric_limits<double>::infinity();
+    double reach = axial_force_scale(), last_mismatch = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < kBracketIterations; ++iteration) {
+      const double tolerance = 0.25 * axial_tolerance();
+      double compatibility = -elongation / length_, flexibility = 0.0;
+      for (std::size_t k = 0; k < sections_.size(); ++k) {
+        if (!match_point_force(k, axial_force, curvature[k], tolerance))
+          return false;
+        compatibility += integration_.weights[k] * axial_strain_[k];
+        flexibility += integration_.weights[k] / axial_stiffness_at_[k];
+      }
+      const double mismatch = std::abs(compatibility) / flexibility; // as a force
+      if (mismatch <= tolerance)
+        return equilibrium_reached(elongation, axial_force);
+      (compatibility < 0.0 ? below : above) = axial_force;
+      const bool stalled = mismatch > 0.5 * last_mismatch;
+      last_mismatch = mismatch;
+      axial_force =
+          bracketed_step(axial_force, compatibility, flexibility, below, above, stalled, reach);
+    }
+    return false;
+  }
 
   double torsional_stiffness() const { return sections_.front().torsional_stiffness(); }
   /// A force scale for the axial tolerance: the axial stiffness times a strain of 1e-6.
