@@ -8,8 +8,10 @@
 #include "brb/solid/solid_body.hpp"
 #include "brb/solid/solid_explicit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <utility>
 
@@ -20,18 +22,50 @@ namespace {
 using Steel = material::SteelDamagePlasticity3D;
 using Mortar = material::MortarDamage3D;
 
-/// The piecewise protocol: segment i goes from targets[i] to targets[i + 1] over
-/// durations[i] with a 1 - cos ramp.
+/// The protocol in time. Consecutive points that go on in the same direction form one
+/// excursion (from a reversal to the next), driven by one 1 - cos ramp of duration
+/// time_per_deformation x |excursion|: the brace moves smoothly through the points inside it
+/// and stops only where the protocol turns. (A ramp per point started and stopped the brace
+/// at every d_y / 10: measured on Girona D3, KE / IE up to 0.134 in the elastic cycles.) Point
+/// k of an excursion from d_a at t_a to d_b, duration T, is passed at
+///   t_k = t_a + (T / pi) acos(1 - 2 (d_k - d_a) / (d_b - d_a)),
+/// the inverse of d(t) = d_a + (d_b - d_a) (1 - cos(pi (t - t_a) / T)) / 2.
 struct Protocol {
-  std::vector<double> targets;   // d_0 = 0, d_1, ...
-  std::vector<double> starts;    // start time of each segment
-  std::vector<double> durations; // of each segment
+  struct Excursion {
+    double start = 0.0, duration = 0.0, from = 0.0, to = 0.0;
+  };
+  std::vector<double> targets;     // d_0 = 0, d_1, ...
+  std::vector<double> point_times; // t_k: when the ramp passes d_k (t_0 = 0)
+  std::vector<Excursion> excursions;
+
+  Protocol(std::vector<double> points, double time_per_deformation) : targets(std::move(points)) {
+    point_times.push_back(0.0);
+    double start = 0.0;
+    std::size_t first = 0; // the excursion's first point
+    while (first + 1 < targets.size()) {
+      const double direction = targets[first + 1] - targets[first];
+      std::size_t last = first + 1;
+      while (last + 1 < targets.size() && (targets[last + 1] - targets[last]) * direction > 0.0)
+        ++last;
+      Excursion excursion{start, time_per_deformation * std::abs(targets[last] - targets[first]),
+                          targets[first], targets[last]};
+      for (std::size_t k = first + 1; k < last; ++k) {
+        const double fraction = (targets[k] - excursion.from) / (excursion.to - excursion.from);
+        point_times.push_back(start + excursion.duration / std::numbers::pi *
+                                          std::acos(std::clamp(1.0 - 2.0 * fraction, -1.0, 1.0)));
+      }
+      start += excursion.duration;
+      point_times.push_back(start);
+      excursions.push_back(excursion);
+      first = last;
+    }
+  }
 
   double at(double t) const {
-    for (std::size_t i = 0; i < durations.size(); ++i)
-      if (t < starts[i] + durations[i])
-        return targets[i] +
-               (targets[i + 1] - targets[i]) * smooth_ramp(t - starts[i], durations[i]);
+    for (const Excursion& excursion : excursions)
+      if (t < excursion.start + excursion.duration)
+        return excursion.from + (excursion.to - excursion.from) *
+                                    smooth_ramp(t - excursion.start, excursion.duration);
     return targets.back();
   }
 };
@@ -136,12 +170,11 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
   // the protocol's timing
   SolidBraceRun run;
   run.first_axial_period = core_first_axial_period(brace, solid);
-  Protocol protocol;
-  protocol.targets.push_back(0.0);
-  protocol.targets.insert(protocol.targets.end(), deformations.begin(), deformations.end());
+  std::vector<double> targets{0.0};
+  targets.insert(targets.end(), deformations.begin(), deformations.end());
   double path = 0.0;
-  for (std::size_t i = 1; i < protocol.targets.size(); ++i)
-    path += std::abs(protocol.targets[i] - protocol.targets[i - 1]);
+  for (std::size_t i = 1; i < targets.size(); ++i)
+    path += std::abs(targets[i] - targets[i - 1]);
   if (!(path > 0.0))
     throw std::invalid_argument("solid brace run: the protocol does not move");
   const double yield_deformation =
@@ -150,13 +183,7 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
                              : settings.time_per_deformation > 0.0
                                  ? settings.time_per_deformation
                                  : 20.0 * run.first_axial_period / yield_deformation;
-  double start = 0.0;
-  for (std::size_t i = 1; i < protocol.targets.size(); ++i) {
-    protocol.starts.push_back(start);
-    protocol.durations.push_back(run.time_per_deformation *
-                                 std::abs(protocol.targets[i] - protocol.targets[i - 1]));
-    start += protocol.durations.back();
-  }
+  const Protocol protocol(std::move(targets), run.time_per_deformation);
 
   // supports and the driven face (its displacement: the brace elongation, halved in a half model)
   SolidLoading loading;
@@ -197,10 +224,13 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
       observer(SolidBraceState{body, mesh, solver.displacement(), run.records.back()});
   };
   record(0);
-  for (std::size_t i = 0; i < protocol.durations.size(); ++i) {
+  for (std::size_t i = 0; i + 1 < protocol.point_times.size(); ++i) {
+    const double segment_start = protocol.point_times[i];
+    const double segment_duration = protocol.point_times[i + 1] - segment_start;
     for (int k = 1; k <= settings.outputs_per_segment; ++k) {
-      const double t =
-          protocol.starts[i] + protocol.durations[i] * k / settings.outputs_per_segment;
+      const double t = k == settings.outputs_per_segment
+                           ? protocol.point_times[i + 1]
+                           : segment_start + segment_duration * k / settings.outputs_per_segment;
       if (!solver.run_to(t, run.failure)) {
         run.steps = solver.steps();
         return run;

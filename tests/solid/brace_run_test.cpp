@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace brb::solid {
 namespace {
@@ -101,6 +103,37 @@ TEST(SolidBraceRun, EndFacesHeldOnTheirCentreLinesLeaveThePoissonStrainFree) {
   EXPECT_GT(held_force, free_force);
   RecordProperty("free_force_over_EA_L", std::to_string(free_force / (stiffness * target)));
   RecordProperty("held_force_over_EA_L", std::to_string(held_force / (stiffness * target)));
+}
+
+TEST(SolidBraceRun, OneRampPerExcursionPassesThePointsWithoutStopping) {
+  // Points 0.1, 0.2, 0.3, then 0.1 d_y: the first three are one excursion (0 -> 0.3 d_y), one
+  // 1 - cos ramp of duration T = time_per_deformation x 0.3 d_y, which passes d_k at
+  // t_k = (T / pi) acos(1 - 2 d_k / 0.3 d_y) (the inverse of the ramp, independent of the
+  // code's bookkeeping); the reversal 0.3 -> 0.1 d_y is a second ramp. The records that end
+  // points 1 and 2 land on their targets at those times while the brace moves (kinetic energy
+  // of the ramp's velocity there), and it stops only at the reversal.
+  const double yield = 355.0 / 210000.0 * 600.0;
+  const std::vector<double> points{0.1 * yield, 0.2 * yield, 0.3 * yield, 0.1 * yield};
+  const SolidBraceRun run = run_solid_brace(bare_core(), points);
+  ASSERT_TRUE(run.completed) << run.failure;
+  const double ramp = run.time_per_deformation * 0.3 * yield;
+  const std::vector<double> expected_times{ramp / std::numbers::pi * std::acos(1.0 - 2.0 / 3.0),
+                                           ramp / std::numbers::pi * std::acos(1.0 - 4.0 / 3.0),
+                                           ramp, ramp + run.time_per_deformation * 0.2 * yield};
+  std::vector<const SolidBraceRecord*> ends(points.size(), nullptr);
+  for (const SolidBraceRecord& r : run.records)
+    if (r.point > 0)
+      ends[static_cast<std::size_t>(r.point) - 1] = &r; // the last record of each point
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    ASSERT_NE(ends[k], nullptr);
+    EXPECT_NEAR(ends[k]->time, expected_times[k], 1e-12 * ramp) << "point " << k + 1;
+    EXPECT_NEAR(ends[k]->deformation, points[k], 1e-9 * yield) << "point " << k + 1;
+  }
+  // moving through points 1 and 2, at rest (up to the ramp's residual vibration) at the turn
+  EXPECT_GT(ends[0]->kinetic, 10.0 * ends[2]->kinetic);
+  EXPECT_GT(ends[1]->kinetic, 10.0 * ends[2]->kinetic);
+  RecordProperty("kinetic_at_point_1_over_at_the_turn",
+                 std::to_string(ends[0]->kinetic / ends[2]->kinetic));
 }
 
 TEST(SolidBraceRun, MassScalingShortensTheRunAtTheSameLoadingRate) {

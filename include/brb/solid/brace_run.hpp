@@ -19,9 +19,11 @@
 //   (the source's half model, BRB_SOURCE_FACTS section 7): u_x = 0 on the symmetry plane
 //   (core, mortar, tube at mid-length), the driven face follows u_x = d(t) / 2; the brace
 //   elongation reported is twice the driven face's displacement.
-// - Loading: the protocol's targets d_1, d_2, ... from d_0 = 0, each segment a smooth 1 - cos
-//   ramp (smooth_ramp: zero velocity at both ends) of duration time_per_deformation x |d_i -
-//   d_i-1|. Default time_per_deformation: 20 T_1 / d_y, with T_1 = 4 L / sqrt(E / rho) the first
+// - Loading: the protocol's targets d_1, d_2, ... from d_0 = 0, each excursion (the points from
+//   one reversal to the next, in one direction) a smooth 1 - cos ramp (smooth_ramp: zero
+//   velocity at both ends) of duration time_per_deformation x |excursion|, passing the points
+//   inside it without stopping; records at equal times between the moments it passes them.
+//   Default time_per_deformation: 20 T_1 / d_y, with T_1 = 4 L / sqrt(E / rho) the first
 //   axial period of the isolated core clamped at one end and free at the other (L: the whole
 //   brace length, also in a half model, so both load at the same rate; rho: the physical
 //   density, so that mass scaling s lengthens the stable step by sqrt(s) and shortens the run
