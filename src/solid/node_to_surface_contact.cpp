@@ -44,6 +44,10 @@ struct NodeToSurfaceContact::Configuration {
       nodes.col(a) = position(face[a]);
     return nodes;
   }
+  /// The current nodes of master face `index` of `pass`.
+  Eigen::Matrix<double, 3, 4> master_face(const Pass& pass, int index) const {
+    return face(pass.master_faces[static_cast<std::size_t>(index)]);
+  }
 };
 
 namespace {
@@ -335,9 +339,6 @@ void NodeToSurfaceContact::add_contact_forces(
 int NodeToSurfaceContact::select_contacts(const Pass& pass, const Configuration& configuration,
                                           const std::vector<Hit>& hits,
                                           std::array<Hit, kMaxFaceContacts>& contacts) const {
-  const auto face_nodes = [&](int face) {
-    return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
-  };
   // the nearest face (inside first, see nearest_of); when the node penetrates it, the nearest
   // penetrated face of each further normal cluster that forms a valley with every face already
   // taken (a concave corner: two independent penalties, one per face)
@@ -353,8 +354,8 @@ int NodeToSurfaceContact::select_contacts(const Pass& pass, const Configuration&
       for (int k = 0; k < count; ++k) {
         const Hit& taken = contacts[static_cast<std::size_t>(k)];
         if (hit.projection.point.normal.dot(taken.projection.point.normal) > kNormalClusterCosine ||
-            !form_valley(face_nodes(hit.face), hit.projection.point, face_nodes(taken.face),
-                         taken.projection.point))
+            !form_valley(configuration.master_face(pass, hit.face), hit.projection.point,
+                         configuration.master_face(pass, taken.face), taken.projection.point))
           return false;
       }
       return true;
@@ -379,9 +380,6 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
   record.failed = false;
   const material::PenaltyFriction& law = pass.laws[i];
   const double k_T = law.parameters().tangential_stiffness;
-  const auto face_nodes = [&](int face) {
-    return configuration.face(pass.master_faces[static_cast<std::size_t>(face)]);
-  };
   const Eigen::Vector3d x_s = configuration.position(slave);
   collect_hits(pass, configuration, x_s, slave, record);
   std::array<Hit, kMaxFaceContacts> contacts;
@@ -399,7 +397,7 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
       dissipated += 0.5 * committed.contact(j).tangential_force.squaredNorm() / k_T;
 
   const auto anchor_position = [&](int face, const Eigen::Vector2d& natural) {
-    return QuadPoint::at(face_nodes(face), natural).position;
+    return QuadPoint::at(configuration.master_face(pass, face), natural).position;
   };
   for (int k = 0; k < count; ++k) {
     const Hit& hit = contacts[static_cast<std::size_t>(k)];
