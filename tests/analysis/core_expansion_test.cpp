@@ -2,6 +2,7 @@
 // (issue 4): a straight restrained core in compression grows sideways by 0.5 |eps| h / 2 per
 // side; once that closes the clearance the mortar confines it, and friction on the confined
 // core raises the compression force (the compression overstrength beta).
+#include "brb/analysis/brb_element.hpp"
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/protocol.hpp"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <vector>
 
 namespace brb::analysis {
 namespace {
@@ -47,6 +49,43 @@ ExpansionRun straight_brace_cycles(double gap, double core_expansion, double ste
   run.result = test.result();
   EXPECT_TRUE(run.result.completed) << run.result.stop_reason;
   return run;
+}
+
+/// The links' node lists of a brace's casing, as built.
+std::vector<std::vector<int>> link_nodes(const model::CasingModel& casing) {
+  std::vector<std::vector<int>> all;
+  for (const element::CasingContact* contact : casing.contacts)
+    all.emplace_back(contact->nodes().begin(), contact->nodes().end());
+  return all;
+}
+
+TEST(CoreExpansion, EachLinkHoldsItsStationsNeighbourCoreNodesInBothBraceForms) {
+  // Each link: core node, casing node, then the core nodes before and after the station (at
+  // an end station only the next or the previous one: the chord starts at the station); the
+  // condensed BRBElement's internal brace has the same links; core_expansion 0: two nodes.
+  const model::BraceSpec spec = test::girona_d3_restrained(4);
+  const model::BraceModel brace = model::build_brace_model(spec);
+  const model::CasingModel& casing = *brace.casing;
+  const std::vector<int>& core = casing.core_nodes;
+  const std::size_t stations = core.size();
+  ASSERT_EQ(stations, 5u);
+  const auto links = link_nodes(casing);
+  for (std::size_t n = 0; n < stations; ++n) {
+    std::vector<int> expected{core[n], casing.nodes[n]};
+    if (n > 0)
+      expected.push_back(core[n - 1]);
+    if (n + 1 < stations)
+      expected.push_back(core[n + 1]);
+    EXPECT_EQ(links[n], expected) << "station " << n;
+  }
+  const analysis::BRBElement condensed({0, 1}, element::Vector3::Zero(),
+                                       element::Vector3(spec.total_length(), 0.0, 0.0), spec,
+                                       std::nullopt, {}, {});
+  EXPECT_EQ(link_nodes(*condensed.internal_brace().casing), links);
+  model::BraceSpec off = spec;
+  off.casing->core_expansion = 0.0;
+  for (const auto& nodes : link_nodes(*model::build_brace_model(off).casing))
+    EXPECT_EQ(nodes.size(), 2u);
 }
 
 TEST(CoreExpansion, ConfinementRaisesTheCompressionPeakWhenItClosesTheGap) {
