@@ -30,17 +30,77 @@ void CasingContactParameters::validate() const {
           "must be orthonormal");
 }
 
+void CoreExpansion::validate() const {
+  require(previous_node >= 0 && next_node >= 0 && previous_node != next_node, "expansion_nodes",
+          "two distinct core nodes around the station");
+  require((next_position - previous_position).norm() > 0.0, "expansion_nodes",
+          "core nodes at distinct positions (a chord of length > 0)");
+  require(extent_y > 0.0 && std::isfinite(extent_y), "extent_y", "must be > 0 mm");
+  require(extent_z > 0.0 && std::isfinite(extent_z), "extent_z", "must be > 0 mm");
+  require(ratio >= 0.0 && ratio <= 0.5, "core_expansion",
+          "lateral over axial strain nu_c in [0, 0.5]");
+}
+
+namespace {
+
+/// nodes_ of a link: core, casing, then the expansion's chord ends not already listed.
+std::vector<int> link_nodes(std::array<int, 2> nodes,
+                            const std::optional<CoreExpansion>& expansion) {
+  std::vector<int> all(nodes.begin(), nodes.end());
+  if (expansion) {
+    expansion->validate();
+    for (const int node : {expansion->previous_node, expansion->next_node}) {
+      if (std::find(all.begin(), all.end(), node) == all.end())
+        all.push_back(node);
+    }
+  }
+  return all;
+}
+
+int index_of(const std::vector<int>& nodes, int node) {
+  return static_cast<int>(std::find(nodes.begin(), nodes.end(), node) - nodes.begin());
+}
+
+} // namespace
+
 CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
                              const Vector3& casing_position,
-                             const CasingContactParameters& parameters, bool skip_open_links)
-    : nodes_(nodes), initial_offset_(core_position - casing_position), parameters_(parameters),
-      bearing_{material::MortarUniaxial((parameters.validate(), parameters.mortar),
-                                        parameters.bearing_depth_y),
-               material::MortarUniaxial(parameters.mortar, parameters.bearing_depth_z)},
+                             const CasingContactParameters& parameters, bool skip_open_links,
+                             const std::optional<CoreExpansion>& expansion)
+    : nodes_(link_nodes(nodes, expansion)), initial_offset_(core_position - casing_position),
+      parameters_(parameters), bearing_{material::MortarUniaxial(
+                                            (parameters.validate(), parameters.mortar),
+                                            parameters.bearing_depth_y),
+                                        material::MortarUniaxial(parameters.mortar,
+                                                                 parameters.bearing_depth_z)},
       friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}),
       skip_open_links_(skip_open_links) {
+  if (expansion) {
+    chord_ends_ = {index_of(nodes_, expansion->previous_node),
+                   index_of(nodes_, expansion->next_node)};
+    chord_initial_length_ = (expansion->next_position - expansion->previous_position).norm();
+    expansion_per_strain_ =
+        -0.5 * expansion->ratio * Eigen::Vector2d(expansion->extent_y, expansion->extent_z);
+  }
   Eigen::VectorXd unused_force;
   scatter(Vector3::Zero(), open_local_tangent(), unused_force, open_tangent_);
+}
+
+CasingContact::Chord CasingContact::chord(std::span<const NodeConfiguration> configuration) const {
+  const Vector3 span = configuration[static_cast<std::size_t>(chord_ends_[1])].position -
+                       configuration[static_cast<std::size_t>(chord_ends_[0])].position;
+  Chord result;
+  result.length = span.norm();
+  result.direction = span / result.length;
+  result.strain = (result.length - chord_initial_length_) / chord_initial_length_;
+  return result;
+}
+
+double CasingContact::penetration(int face) const {
+  const int direction = 1 + face / 2;
+  const double gap = direction == 1 ? parameters_.gap_y : parameters_.gap_z;
+  const double motion = face % 2 == 0 ? relative_[direction] : -relative_[direction];
+  return motion - gap + expansion_[direction - 1];
 }
 
 Matrix3 CasingContact::open_local_tangent() const {
@@ -57,8 +117,9 @@ void CasingContact::scatter(const Vector3& local_force, const Matrix3& local_tan
   const Matrix3& axes = parameters_.axes;
   const Vector3 global_force = axes * local_force;
   const Matrix3 global_tangent = axes * local_tangent * axes.transpose();
-  force = Eigen::VectorXd::Zero(12);
-  tangent = Eigen::MatrixXd::Zero(12, 12);
+  const Eigen::Index dofs = 6 * static_cast<Eigen::Index>(nodes_.size());
+  force = Eigen::VectorXd::Zero(dofs);
+  tangent = Eigen::MatrixXd::Zero(dofs, dofs);
   force.segment<3>(0) = global_force;
   force.segment<3>(6) = -global_force;
   tangent.block<3, 3>(0, 0) = global_tangent;
@@ -73,11 +134,18 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   const Matrix3& axes = parameters_.axes;
   relative_ =
       axes.transpose() * (configuration[0].position - configuration[1].position - initial_offset_);
+  Chord core_chord;
+  if (has_expansion()) {
+    core_chord = chord(configuration);
+    expansion_ = expansion_per_strain_ * core_chord.strain;
+  }
   trial_ = committed_;
   trial_.bearing_strain.fill(0.0);
+  face_forces_.fill(0.0);
+  normal_force_ = 0.0;
 
-  if (skip_open_links_ && !(std::abs(relative_[1]) - parameters_.gap_y > 0.0) &&
-      !(std::abs(relative_[2]) - parameters_.gap_z > 0.0)) {
+  if (skip_open_links_ && !(penetration(0) > 0.0) && !(penetration(1) > 0.0) &&
+      !(penetration(2) > 0.0) && !(penetration(3) > 0.0)) {
     // Open link: the layer springs only. The state changes as the general path changes it:
     // faces as committed, the friction slip follows the axial motion (F6).
     ++open_evaluations_;
@@ -87,7 +155,7 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     local_force[2] += parameters_.layer_stiffness * relative_[2];
     in_contact_ = false;
     link_force_ = local_force;
-    force = Eigen::VectorXd::Zero(12);
+    force = Eigen::VectorXd::Zero(open_tangent_.rows());
     const Vector3 global_force = parameters_.axes * local_force;
     force.segment<3>(0) = global_force;
     force.segment<3>(6) = -global_force;
@@ -95,23 +163,28 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     return true;
   }
 
-  // Bearing on each face: penetration p = |u| - gap on the side the core moves to; the
-  // mortar is compressed at strain -p / depth. Faces not penetrated cost nothing.
+  // Bearing on each face: penetration p (see penetration()); the mortar is compressed at
+  // strain -p / depth. Faces not penetrated cost nothing. Per direction the sums over its
+  // two faces: bearing force S, stiffness K (dS/de) and signed stiffness K_r (dS/dr).
   Vector3 local_force = Vector3::Zero(); // resisting force on the core (axis, y, z)
   Matrix3 local_tangent = Matrix3::Zero();
   double normal_force = 0.0;
-  Eigen::RowVector3d normal_rate = Eigen::RowVector3d::Zero(); // dN/d(relative)
+  Eigen::RowVector3d normal_rate = Eigen::RowVector3d::Zero();   // dN/d(relative)
+  Eigen::Vector2d direction_force = Eigen::Vector2d::Zero();     // S per direction
+  Eigen::Vector2d direction_stiffness = Eigen::Vector2d::Zero(); // K per direction
+  bool penetrated = false;
   in_contact_ = false;
   for (int direction = 1; direction <= 2; ++direction) {
-    const double gap = direction == 1 ? parameters_.gap_y : parameters_.gap_z;
     const double area = direction == 1 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
     const double depth = direction == 1 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
     const material::MortarUniaxial& bearing = bearing_[direction - 1];
-    const double motion = relative_[direction];
-    const int face = 2 * (direction - 1) + (motion >= 0.0 ? 0 : 1);
-    const double penetration = std::abs(motion) - gap;
-    if (penetration > 0.0) {
-      const double strain = -penetration / depth;
+    for (int side = 0; side < 2; ++side) {
+      const int face = 2 * (direction - 1) + side;
+      const double face_penetration = penetration(face);
+      if (!(face_penetration > 0.0))
+        continue;
+      penetrated = true;
+      const double strain = -face_penetration / depth;
       const auto response = bearing.evaluate(committed_.faces[face], strain);
       if (!std::isfinite(response.stress)) {
         failure = "casing contact: non-finite bearing stress";
@@ -121,17 +194,21 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
       trial_.bearing_strain[face] = strain;
       const double bearing_force = -area * response.stress; // >= 0, pushes the core back
       const double stiffness = area * response.tangent / depth;
-      const double sign = motion >= 0.0 ? 1.0 : -1.0;
+      const double sign = side == 0 ? 1.0 : -1.0; // dp/dr
       local_force[direction] += sign * bearing_force;
       local_tangent(direction, direction) += stiffness;
       normal_force += bearing_force;
       normal_rate[direction] += sign * stiffness;
+      direction_force[direction - 1] += bearing_force;
+      direction_stiffness[direction - 1] += stiffness;
+      face_forces_[face] = bearing_force;
       in_contact_ = in_contact_ || bearing_force > 0.0;
     }
     // unbonding layer: always active
-    local_force[direction] += parameters_.layer_stiffness * motion;
+    local_force[direction] += parameters_.layer_stiffness * relative_[direction];
     local_tangent(direction, direction) += parameters_.layer_stiffness;
   }
+  normal_force_ = normal_force;
 
   // Coulomb friction along the axis with the total bearing force as normal force. Called
   // with dN/dg = 1 so that the tangent's first column is dT/dN.
@@ -143,7 +220,56 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   local_tangent.row(0) += friction.tangent(1, 0) * normal_rate;
   link_force_ = local_force;
   scatter(local_force, local_tangent, force, tangent);
+  if (has_expansion() && penetrated)
+    add_expansion_terms(core_chord, direction_force, direction_stiffness, normal_rate,
+                        friction.tangent(1, 0), force, tangent);
   return true;
+}
+
+void CasingContact::add_expansion_terms(const Chord& core_chord,
+                                        const Eigen::Vector2d& direction_force,
+                                        const Eigen::Vector2d& direction_stiffness,
+                                        const Eigen::RowVector3d& normal_rate,
+                                        double friction_normal_rate, Eigen::VectorXd& force,
+                                        Eigen::MatrixXd& tangent) const {
+  // e_d = m_d eps with m_d = -nu_c h_d / 2 and eps = l / l0 - 1 (l: the chord's length):
+  // deps/dx_next = n / l0 = -deps/dx_previous, d2eps/dx_next2 = (I - n n^T) / (l0 l).
+  // Stored energy W = sum over faces W_f(p_f), dp_f/de_d = 1, so the chord's ends get
+  // Q deps/dx with Q = dW/deps = sum_d m_d S_d, and the tangent is
+  //   d2W = sum_f k_f dp_f dp_f^T + Q d2eps:
+  //   relative-chord: m_d K_r,d (dr_d/dx)(deps/dx)^T and its transpose,
+  //   chord-chord:    sum_d m_d^2 K_d (deps/dx)(deps/dx)^T + Q d2eps,
+  // and friction's row gets dT/dN dN/deps deps/dx, dN/deps = sum_d m_d K_d.
+  const Matrix3& axes = parameters_.axes;
+  const Eigen::Vector2d& m = expansion_per_strain_;
+  const double l0 = chord_initial_length_;
+  const Vector3 strain_rate = core_chord.direction / l0; // deps/dx_next
+  const double energy_rate = m.dot(direction_force);     // Q
+  Vector3 bearing_coupling = Vector3::Zero();            // sum_d m_d K_r,d a_d (global): dQ/dx_core
+  for (int d = 0; d < 2; ++d)
+    bearing_coupling += m[d] * normal_rate[d + 1] * axes.col(d + 1);
+  const Vector3 row_coupling =
+      bearing_coupling + friction_normal_rate * m.dot(direction_stiffness) * axes.col(0);
+  const double chord_stiffness = m.cwiseProduct(m).dot(direction_stiffness);
+  const Matrix3 chord_curvature =
+      (Matrix3::Identity() - core_chord.direction * core_chord.direction.transpose()) /
+      (l0 * core_chord.length);
+  const Matrix3 chord_block = chord_stiffness * strain_rate * strain_rate.transpose() +
+                              energy_rate * chord_curvature;             // d2W/dx_next2
+  const Matrix3 relative_block = row_coupling * strain_rate.transpose(); // rows core, cols next
+  const Matrix3 transposed_block = strain_rate * bearing_coupling.transpose();
+
+  const std::array<int, 2> ends{6 * chord_ends_[0], 6 * chord_ends_[1]};
+  const std::array<double, 2> end_sign{-1.0, 1.0}; // deps/dx_end = sign strain_rate
+  for (int a = 0; a < 2; ++a) {
+    force.segment<3>(ends[a]) += end_sign[a] * energy_rate * strain_rate;
+    tangent.block<3, 3>(0, ends[a]) += end_sign[a] * relative_block;
+    tangent.block<3, 3>(6, ends[a]) -= end_sign[a] * relative_block;
+    tangent.block<3, 3>(ends[a], 0) += end_sign[a] * transposed_block;
+    tangent.block<3, 3>(ends[a], 6) -= end_sign[a] * transposed_block;
+    for (int b = 0; b < 2; ++b)
+      tangent.block<3, 3>(ends[a], ends[b]) += end_sign[a] * end_sign[b] * chord_block;
+  }
 }
 
 ElementEnergy CasingContact::energy() const {

@@ -211,9 +211,9 @@ std::optional<TubeMisfit> misfit_in_tube(const model::CasingSpec& casing,
 model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
                               const std::optional<model::ZoneSpec>& transition) {
   object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
-                        "layer_stiffness", "fill_fibers", "stopper", "overlap"},
+                        "layer_stiffness", "fill_fibers", "stopper", "overlap", "core_expansion"},
                        "a casing object {tube or outline, tube_steel, mortar, gap, friction, "
-                       "layer_stiffness, fill_fibers, stopper, overlap} or null");
+                       "layer_stiffness, fill_fibers, stopper, overlap, core_expansion} or null");
   model::CasingSpec casing;
   const auto outline = object.find("outline");
   if (outline && object.find("tube")) {
@@ -270,6 +270,15 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
     if (!(casing.friction_coefficient >= 0.0)) {
       throw friction->error("the friction coefficient must be >= 0 (got " +
                             describe_json_value(friction->json()) + ")");
+    }
+  }
+  if (const auto expansion = object.find("core_expansion")) {
+    casing.core_expansion =
+        expansion->number("the core's lateral over axial strain nu_c in the contact, -");
+    if (!(casing.core_expansion >= 0.0 && casing.core_expansion <= 0.5)) {
+      throw expansion->error("the core expansion nu_c must be in [0, 0.5] (0: off, 0.5: plastic "
+                             "incompressibility; got " +
+                             describe_json_value(expansion->json()) + ")");
     }
   }
   if (const auto layer = object.find("layer_stiffness")) {

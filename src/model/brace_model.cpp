@@ -76,6 +76,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
             casing.tube.shape == SectionShape::circular_tube,
         "casing/tube/shape", "must be rectangular_tube or circular_tube");
   check(casing.friction_coefficient >= 0.0, "casing/friction", "must be >= 0");
+  check(casing.core_expansion >= 0.0 && casing.core_expansion <= 0.5, "casing/core_expansion",
+        "must be in [0, 0.5] (lateral over axial strain of the core)");
   check(casing.tangential_stiffness_ratio > 0.0, "casing/tangential_stiffness_ratio",
         "must be > 0");
   check(casing.stopper_stiffness_ratio > 0.0, "casing/stopper_stiffness_ratio", "must be > 0");
@@ -183,9 +185,22 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
         thickness_y;
     link.tangential_stiffness = casing.tangential_stiffness_ratio * bearing_stiffness;
     const int core = result.core_nodes[n], shell = result.nodes[n];
+    // The core's expansion from the chord of its neighbour stations (at an end station the
+    // station itself is one end); nu_c = 0 leaves the two-node link.
+    std::optional<element::CoreExpansion> expansion;
+    if (casing.core_expansion > 0.0 && stations > 1) {
+      expansion.emplace();
+      expansion->previous_node = result.core_nodes[n > 0 ? n - 1 : n];
+      expansion->next_node = result.core_nodes[n + 1 < stations ? n + 1 : n];
+      expansion->previous_position = model.coordinates(expansion->previous_node);
+      expansion->next_position = model.coordinates(expansion->next_node);
+      expansion->extent_y = extent_y;
+      expansion->extent_z = extent_z;
+      expansion->ratio = casing.core_expansion;
+    }
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
         std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link,
-        skips.open_links)));
+        skips.open_links, expansion)));
     if (n == stations / 2)
       result.interior_link = link; // mid-length: a core station
   }

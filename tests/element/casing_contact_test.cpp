@@ -5,7 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "brb/material/mortar_damage.hpp"
+#include "brb/material/parameter_error.hpp"
+
+#include <array>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace brb::element {
 namespace {
@@ -154,6 +160,286 @@ TEST(CasingContact, TangentMatchesFiniteDifferences) {
   const Eigen::MatrixXd numeric =
       test::central_difference_jacobian(force_of, Eigen::VectorXd::Zero(12).eval(), 1e-8);
   EXPECT_LT(test::relative_difference(probe.tangent, numeric), 1e-6);
+}
+
+// --- the core's lateral (Poisson) expansion (issue 4) ---
+
+/// A link at an interior station: core node 0 and casing node 1 at the origin, the core
+/// nodes before and after it (2, 3) at -/+ half_chord along the brace axis.
+struct ExpansionProbe {
+  static constexpr double half_chord = 50.0;
+  CasingContactParameters parameters;
+  CasingContact contact;
+  std::vector<NodeConfiguration> nodes;
+  Eigen::VectorXd force;
+  Eigen::MatrixXd tangent;
+
+  ExpansionProbe(const CasingContactParameters& link, double extent_y, double extent_z,
+                 bool skip_open_links = true)
+      : parameters(link), contact({0, 1}, Vector3::Zero(), Vector3::Zero(), link, skip_open_links,
+                                  expansion(link.axes, extent_y, extent_z)),
+        nodes{{Vector3::Zero(), Matrix3::Identity()},
+              {Vector3::Zero(), Matrix3::Identity()},
+              {link.axes.col(0) * -half_chord, Matrix3::Identity()},
+              {link.axes.col(0) * half_chord, Matrix3::Identity()}} {}
+
+  static CoreExpansion expansion(const Matrix3& axes, double extent_y, double extent_z) {
+    CoreExpansion core;
+    core.previous_node = 2;
+    core.next_node = 3;
+    core.previous_position = axes.col(0) * -half_chord;
+    core.next_position = axes.col(0) * half_chord;
+    core.extent_y = extent_y;
+    core.extent_z = extent_z;
+    return core; // ratio 0.5 by default
+  }
+  /// Local (axis, y, z) positions: the core node relative to the casing (at the origin), and
+  /// the chord's ends at a uniform axial strain plus lateral offsets of their own.
+  void place(const Vector3& core, double strain, const Vector3& previous_offset = Vector3::Zero(),
+             const Vector3& next_offset = Vector3::Zero()) {
+    const Matrix3& axes = parameters.axes;
+    nodes[0].position = axes * core;
+    nodes[2].position = axes * (Vector3(-half_chord * (1.0 + strain), 0.0, 0.0) + previous_offset);
+    nodes[3].position = axes * (Vector3(half_chord * (1.0 + strain), 0.0, 0.0) + next_offset);
+  }
+  void evaluate() {
+    std::string failure;
+    ASSERT_TRUE(contact.evaluate(nodes, force, tangent, failure)) << failure;
+  }
+};
+
+TEST(CasingContactExpansion, LinkHoldsTheChordNodesOnce) {
+  // Interior station: core, casing and both neighbours; an end station: the station's own
+  // core node is one end of the chord and is not listed twice.
+  const auto parameters = small_brb_contact();
+  ExpansionProbe interior(parameters, 10.0, 20.0);
+  EXPECT_EQ(std::vector<int>(interior.contact.nodes().begin(), interior.contact.nodes().end()),
+            (std::vector<int>{0, 1, 2, 3}));
+  CoreExpansion end = ExpansionProbe::expansion(parameters.axes, 10.0, 20.0);
+  end.previous_node = 0;
+  end.previous_position = Vector3::Zero();
+  CasingContact end_link({0, 1}, Vector3::Zero(), Vector3::Zero(), parameters, true, end);
+  EXPECT_EQ(std::vector<int>(end_link.nodes().begin(), end_link.nodes().end()),
+            (std::vector<int>{0, 1, 3}));
+  CoreExpansion wrong = end;
+  wrong.ratio = 0.6;
+  EXPECT_THROW(CasingContact({0, 1}, Vector3::Zero(), Vector3::Zero(), parameters, true, wrong),
+               brb::ParameterError);
+}
+
+/// Central differences of a link's nodal forces with respect to every DOF of its nodes
+/// (translations and spins; the link uses translations only), from its trial configuration.
+Eigen::MatrixXd numeric_tangent(CasingContact& contact,
+                                const std::vector<NodeConfiguration>& configuration) {
+  const auto force_of = [&](const Eigen::VectorXd& u) {
+    auto moved = configuration;
+    for (std::size_t n = 0; n < moved.size(); ++n)
+      moved[n].position += u.segment<3>(6 * static_cast<Eigen::Index>(n));
+    Eigen::VectorXd f;
+    Eigen::MatrixXd unused;
+    std::string why;
+    EXPECT_TRUE(contact.evaluate(moved, f, unused, why));
+    return f;
+  };
+  const auto dofs = 6 * static_cast<Eigen::Index>(configuration.size());
+  return test::central_difference_jacobian(force_of, Eigen::VectorXd::Zero(dofs).eval(), 1e-8);
+}
+
+TEST(CasingContactExpansion, TangentMatchesFiniteDifferencesOnBothFacesWhileSliding) {
+  // Reference: central differences of the nodal forces of the four-node link (core, casing,
+  // both chord nodes), rotated axes, the core compressed by 5 % so that both y faces bear
+  // (e_y = 0.5 x 0.05 x 10 / 2 = 0.125 mm against a 0.12 mm gap plus a small lateral
+  // motion) and one z face (lateral motion), with a crushed +z face committed, friction
+  // sliding, and a bowed chord (its direction off the axis: the chord's curvature term).
+  auto parameters = small_brb_contact(100.0);
+  parameters.axes = Eigen::AngleAxisd(0.4, Vector3(0.2, 0.5, 1.0).normalized()).toRotationMatrix();
+  ExpansionProbe probe(parameters, 10.0, 20.0);
+  const Vector3 bow(0.0, 0.3, -0.2);
+  probe.place(Vector3(0.2, 0.002, 0.1), -0.03, bow, -bow);
+  probe.evaluate();
+  probe.contact.commit();
+  probe.place(Vector3(0.6, 0.003, 0.4), -0.05, bow, -0.5 * bow);
+  probe.evaluate();
+  probe.contact.commit();
+  EXPECT_GT(probe.contact.max_mortar_damage(), 0.0); // +z crushed (0.4 - 0.12 + 0.25 mm)
+  probe.place(Vector3(0.9, 0.0035, 0.41), -0.0502, bow, -0.5 * bow);
+  probe.evaluate();
+  const auto& faces = probe.contact.face_forces();
+  ASSERT_GT(faces[0], 0.0);
+  ASSERT_GT(faces[1], 0.0);
+  ASSERT_GT(faces[2], 0.0);
+  EXPECT_EQ(faces[3], 0.0);
+  // sliding: |T| = kappa N, N the sum of the faces
+  EXPECT_NEAR(probe.contact.normal_force(), faces[0] + faces[1] + faces[2] + faces[3], 1e-9);
+  EXPECT_NEAR(std::abs(probe.contact.link_force()[0]), 0.1 * probe.contact.normal_force(),
+              1e-9 * probe.contact.normal_force());
+  ASSERT_EQ(probe.tangent.rows(), 24);
+  const Eigen::MatrixXd numeric = numeric_tangent(probe.contact, probe.nodes);
+  EXPECT_LT(test::relative_difference(probe.tangent, numeric), 1e-6);
+  // the chord's columns on their own (their entries, k m / l0, are small next to the
+  // bearing stiffness k, so the whole matrix's norm would hide an error in them)
+  EXPECT_GT(numeric.rightCols(12).norm(), 0.0);
+  EXPECT_LT(test::relative_difference(probe.tangent.rightCols(12), numeric.rightCols(12)), 1e-6);
+  EXPECT_LT(test::relative_difference(probe.tangent.bottomRows(12), numeric.bottomRows(12)), 1e-6);
+}
+
+TEST(CasingContactExpansion, EndStationTangentMatchesFiniteDifferences) {
+  // Reference: central differences; an end station whose chord runs from its own core node
+  // to the next one (three nodes), the core pressed on both z faces and sliding.
+  auto parameters = small_brb_contact(100.0);
+  parameters.axes = Eigen::AngleAxisd(-0.3, Vector3(1.0, 0.3, 0.2).normalized()).toRotationMatrix();
+  CoreExpansion end = ExpansionProbe::expansion(parameters.axes, 10.0, 20.0);
+  end.previous_node = 0;
+  end.previous_position = Vector3::Zero();
+  CasingContact contact({0, 1}, Vector3::Zero(), Vector3::Zero(), parameters, true, end);
+  std::vector<NodeConfiguration> nodes(3);
+  const auto place = [&](const Vector3& core, const Vector3& next) {
+    nodes[0].position = parameters.axes * core;
+    nodes[2].position = parameters.axes * next;
+  };
+  Eigen::VectorXd force;
+  Eigen::MatrixXd tangent;
+  std::string failure;
+  place(Vector3(0.1, 0.0, 0.01), Vector3(47.0, 0.05, 0.02)); // eps -0.06: e_z 0.3 mm
+  ASSERT_TRUE(contact.evaluate(nodes, force, tangent, failure));
+  contact.commit();
+  place(Vector3(0.5, 0.001, 0.015), Vector3(47.1, 0.06, 0.03));
+  ASSERT_TRUE(contact.evaluate(nodes, force, tangent, failure));
+  ASSERT_GT(contact.face_forces()[2], 0.0);
+  ASSERT_GT(contact.face_forces()[3], 0.0);
+  ASSERT_EQ(tangent.rows(), 18);
+  const Eigen::MatrixXd numeric = numeric_tangent(contact, nodes);
+  EXPECT_LT(test::relative_difference(tangent, numeric), 1e-6);
+}
+
+TEST(CasingContactExpansion, UniformlyCompressedStraightCoreBearsOnBothFacesOnceTheGapCloses) {
+  // Reference (theory): a straight core at uniform axial strain eps with no lateral motion
+  // grows by e = 0.5 |eps| h / 2 per side. No bearing while e < gap; past it each face of
+  // that direction bears with A sigma((e - gap) / depth), here elastic (depth 100 mm: the
+  // mortar crushes at 0.228 mm, more than the largest e - gap = 0.1 mm), A E (e - gap) /
+  // depth; equal and opposite forces (no net lateral force), friction's normal force their
+  // sum, and on the chord's ends the energy's derivative: dW/deps / l0 along the chord, with
+  // dW/deps = -(h_y / 4) (S_+y + S_-y) - (h_z / 4) (S_+z + S_-z).
+  auto parameters = small_brb_contact(100.0);
+  parameters.gap_y = 0.1; // y faces close at |eps| = 4 gap / h_y = 0.04
+  parameters.gap_z = 0.3; // z faces at 4 x 0.3 / 20 = 0.06
+  parameters.bearing_area_z = 300.0;
+  ExpansionProbe probe(parameters, 10.0, 20.0);
+  int y_bearing = 0, z_bearing = 0;
+  for (int i = 0; i <= 80; ++i) {
+    const double strain = -0.001 * i;
+    probe.place(Vector3::Zero(), strain);
+    probe.evaluate();
+    probe.contact.commit();
+    const double closure_y = 0.5 * std::abs(strain) * 10.0 / 2.0 - 0.1;
+    const double closure_z = 0.5 * std::abs(strain) * 20.0 / 2.0 - 0.3;
+    const double face_y = closure_y > 0.0 ? 200.0 * 17520.0 * closure_y / 100.0 : 0.0;
+    const double face_z = closure_z > 0.0 ? 300.0 * 17520.0 * closure_z / 100.0 : 0.0;
+    const auto& faces = probe.contact.face_forces();
+    const double scale = 1e-9 * (face_y + face_z + 1.0);
+    EXPECT_NEAR(faces[0], face_y, scale) << "eps " << strain;
+    EXPECT_NEAR(faces[1], face_y, scale) << "eps " << strain;
+    EXPECT_NEAR(faces[2], face_z, scale) << "eps " << strain;
+    EXPECT_NEAR(faces[3], face_z, scale) << "eps " << strain;
+    EXPECT_NEAR(probe.contact.normal_force(), 2.0 * (face_y + face_z), 4.0 * scale);
+    EXPECT_EQ(probe.contact.in_contact(), face_y + face_z > 0.0);
+    // no net lateral force on core or casing, and no friction without axial sliding
+    EXPECT_NEAR(probe.force.segment<3>(0).norm(), 0.0, scale);
+    EXPECT_NEAR(probe.force.segment<3>(6).norm(), 0.0, scale);
+    const double energy_rate = -(10.0 / 4.0) * 2.0 * face_y - (20.0 / 4.0) * 2.0 * face_z;
+    const Vector3 on_next =
+        energy_rate / (2.0 * ExpansionProbe::half_chord) * parameters.axes.col(0);
+    EXPECT_NEAR((probe.force.segment<3>(18) - on_next).norm(), 0.0, scale);
+    EXPECT_NEAR((probe.force.segment<3>(12) + on_next).norm(), 0.0, scale);
+    y_bearing += face_y > 0.0;
+    z_bearing += face_z > 0.0;
+  }
+  EXPECT_GT(y_bearing, 30); // both regimes visited
+  EXPECT_GT(z_bearing, 10);
+  // Sliding the core along the casing: Coulomb on the sum of the four faces.
+  probe.place(Vector3(0.5, 0.0, 0.0), -0.08);
+  probe.evaluate();
+  EXPECT_NEAR(std::abs(probe.contact.link_force()[0]), 0.1 * probe.contact.normal_force(),
+              1e-9 * probe.contact.normal_force());
+  // Tension shrinks the core: the gaps stay open.
+  probe.place(Vector3::Zero(), 0.05);
+  probe.evaluate();
+  EXPECT_EQ(probe.contact.normal_force(), 0.0);
+  EXPECT_LT(probe.contact.core_expansion()[0], 0.0);
+}
+
+TEST(CasingContactExpansion, CrushingFollowsTheMortarLawAtTheExpansionPenetration) {
+  // Reference: the mortar law itself (material::MortarUniaxial, tested on its own), driven
+  // independently at the strain -(0.5 |eps| h / 2 - gap) / depth of a face: the link's face
+  // force is A times its stress through crushing and softening.
+  const auto parameters = small_brb_contact(10.0); // crushes at 0.0228 mm
+  ExpansionProbe probe(parameters, 10.0, 10.0);
+  const material::MortarUniaxial law(parameters.mortar, 10.0);
+  material::MortarState state;
+  for (int i = 0; i <= 120; ++i) {
+    const double strain = -0.0006 * i; // e up to 0.18 mm, 0.06 mm past the gap
+    probe.place(Vector3::Zero(), strain);
+    probe.evaluate();
+    probe.contact.commit();
+    const double closure = 0.5 * std::abs(strain) * 10.0 / 2.0 - 0.12;
+    double expected = 0.0;
+    if (closure > 0.0) {
+      const auto response = law.evaluate(state, -closure / 10.0);
+      state = response.state;
+      expected = -200.0 * response.stress;
+    }
+    for (const double face : probe.contact.face_forces())
+      EXPECT_NEAR(face, expected, 1e-9 * (expected + 1.0)) << "eps " << strain;
+  }
+  EXPECT_GT(state.damage, 0.5); // the test went through crushing
+  EXPECT_NEAR(probe.contact.max_mortar_damage(), state.damage, 1e-12);
+}
+
+TEST(CasingContactExpansion, WorkEqualsStoredPlusDissipatedAlongALoadingPath) {
+  // Reference: energy conservation. Along a path of lateral motion, axial sliding and axial
+  // strain of the chord, in and out of contact on every face (crushing, friction slip), the
+  // work of the nodal forces (trapezoidal rule over small steps) equals the change of
+  // stored + dissipated energy.
+  auto parameters = small_brb_contact(10.0);
+  parameters.axes = Eigen::AngleAxisd(0.7, Vector3(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
+  ExpansionProbe probe(parameters, 10.0, 20.0);
+  const int steps = 40000;
+  double work = 0.0;
+  Eigen::VectorXd previous_force;
+  std::vector<NodeConfiguration> previous_nodes;
+  int both_faces = 0, open = 0;
+  double max_damage = 0.0;
+  double largest_mismatch = 0.0;
+  for (int k = 0; k <= steps; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / steps;
+    const Vector3 core(0.5 * std::sin(t), 0.05 * std::sin(2.0 * t), 0.2 * std::sin(3.0 * t));
+    const double strain = -0.06 * std::sin(0.5 * t) * std::sin(0.5 * t) + 0.01 * std::sin(5.0 * t);
+    probe.place(core, strain, Vector3(0.0, 0.1 * std::sin(t), 0.0), Vector3::Zero());
+    probe.evaluate();
+    if (k > 0) {
+      for (std::size_t n = 0; n < probe.nodes.size(); ++n) {
+        const auto i = 6 * static_cast<Eigen::Index>(n);
+        work += 0.5 * (previous_force.segment<3>(i) + probe.force.segment<3>(i))
+                          .dot(probe.nodes[n].position - previous_nodes[n].position);
+      }
+    }
+    probe.contact.commit();
+    const ElementEnergy now = probe.contact.energy();
+    largest_mismatch = std::max(largest_mismatch, std::abs(work - now.stored - now.dissipated));
+    previous_force = probe.force;
+    previous_nodes = probe.nodes;
+    const auto& faces = probe.contact.face_forces();
+    both_faces += (faces[0] > 0.0 && faces[1] > 0.0) || (faces[2] > 0.0 && faces[3] > 0.0);
+    open += !probe.contact.in_contact();
+    max_damage = std::max(max_damage, probe.contact.max_mortar_damage());
+  }
+  const ElementEnergy energy = probe.contact.energy();
+  EXPECT_GT(both_faces, 1000);
+  EXPECT_GT(open, 1000);
+  EXPECT_GT(max_damage, 0.5);
+  EXPECT_GT(energy.dissipated, 0.0);
+  EXPECT_NEAR(work, energy.stored + energy.dissipated, 1e-4 * work);
+  EXPECT_LT(largest_mismatch, 1e-4 * work); // at every point of the path, stored > 0 or not
 }
 
 } // namespace

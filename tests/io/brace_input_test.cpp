@@ -86,7 +86,8 @@ json girona_casing() {
           {"friction", 0.2},
           {"layer_stiffness", 0.05},
           {"fill_fibers", {2, 12}},
-          {"stopper", {{"position", 0.25}}}};
+          {"stopper", {{"position", 0.25}}},
+          {"core_expansion", 0.3}};
 }
 
 /// full_brace() with girona_casing().
@@ -212,6 +213,7 @@ TEST(BraceInput, ReadsTheCasingIntoTheSpec) {
   EXPECT_EQ(casing.fill_fibers_a, 2);
   EXPECT_EQ(casing.fill_fibers_b, 12);
   EXPECT_EQ(casing.stopper_position, 0.25);
+  EXPECT_EQ(casing.core_expansion, 0.3);
   // (109 - 22) / 2 - 0.5 = 43 mm of mortar all around
   const auto [thickness_y, thickness_z] = casing.mortar_thickness(spec.core_section);
   EXPECT_DOUBLE_EQ(thickness_y, 43.0);
@@ -221,7 +223,8 @@ TEST(BraceInput, ReadsTheCasingIntoTheSpec) {
 TEST(BraceInput, CasingDefaultsAndOneGapForBothDirections) {
   json brace = full_brace();
   brace["casing"] = girona_casing();
-  for (const char* key : {"friction", "layer_stiffness", "fill_fibers", "stopper"})
+  for (const char* key :
+       {"friction", "layer_stiffness", "fill_fibers", "stopper", "core_expansion"})
     brace["casing"].erase(key);
   brace["casing"]["gap"] = 1.5;
   const model::BraceSpec spec = parse_brace(brace.dump(), "defaults.json");
@@ -234,6 +237,7 @@ TEST(BraceInput, CasingDefaultsAndOneGapForBothDirections) {
   EXPECT_EQ(spec.casing->fill_fibers_a, defaults.fill_fibers_a);
   EXPECT_EQ(spec.casing->fill_fibers_b, defaults.fill_fibers_b);
   EXPECT_EQ(spec.casing->stopper_position, 0.5);
+  EXPECT_EQ(spec.casing->core_expansion, 0.5); // plastic incompressibility
 }
 
 TEST(BraceInput, RectangularTubeAroundAPlateTakesAGapPerDirection) {
@@ -775,6 +779,18 @@ INSTANTIATE_TEST_SUITE_P(
                    brace["casing"]["stopper"]["position"] = 1.5;
                  },
                  "/casing/stopper/position"},
+        BadBrace{"core_expansion_above_incompressible",
+                 [](json& brace) {
+                   brace["casing"] = girona_casing();
+                   brace["casing"]["core_expansion"] = 0.6;
+                 },
+                 "/casing/core_expansion"},
+        BadBrace{"negative_core_expansion",
+                 [](json& brace) {
+                   brace["casing"] = girona_casing();
+                   brace["casing"]["core_expansion"] = -0.1;
+                 },
+                 "/casing/core_expansion"},
         BadBrace{"unknown_stopper_key",
                  [](json& brace) {
                    brace["casing"] = girona_casing();

@@ -12,6 +12,17 @@
 // which is exact for the small rotations of the casing relative to the core's axis.
 // DOF: 6 per node (translations used), force on the core = -force on the casing.
 //
+// Core expansion (issue 4, optional: CoreExpansion): a yielding core in compression grows
+// sideways (plastic incompressibility, lateral strain -0.5 x axial strain) and closes the
+// clearance even when it stays straight. The link then also holds the core nodes before and
+// after its station (the chord between them gives the core's axial strain eps there) and the
+// core's half-extent along y and z grows by e = -nu_c eps h / 2. Each face's penetration is
+//   p(+y) = r_y - gap_y + e_y,   p(-y) = -r_y - gap_y + e_y   (and z),
+// so both faces of a direction can bear at once (a confined core: equal and opposite lateral
+// forces, twice the normal force for friction). The bearing forces are the derivatives of
+// the faces' stored energy, so the chord's nodes get F dp/de de/dx along the chord, and the
+// tangent is the exact second derivative (plus friction's dT/dN dN/dx).
+//
 // Open links (DESIGN.md section 10): while no face is penetrated only the layer spring acts
 // (friction has no normal force: zero force and tangent, its slip follows the axial motion),
 // so the tangent is the constant layer tangent, kept from construction; the bearing and
@@ -24,6 +35,8 @@
 #include "brb/material/penalty_friction.hpp"
 
 #include <array>
+#include <optional>
+#include <vector>
 
 namespace brb::element {
 
@@ -46,13 +59,35 @@ struct CasingContactParameters {
   void validate() const;
 };
 
+/// The core's lateral expansion at a link's station: the core nodes before and after it
+/// along the core (at an end station one of them is the station's own core node), whose
+/// chord measures the core's axial strain, and the core's extents there.
+struct CoreExpansion {
+  int previous_node = -1;
+  int next_node = -1;
+  Vector3 previous_position = Vector3::Zero(); ///< initial positions (mm)
+  Vector3 next_position = Vector3::Zero();
+  double extent_y = 0.0; ///< h_y: the core's extent along section y at the station (mm)
+  double extent_z = 0.0; ///< h_z (mm)
+  /// nu_c: lateral over axial strain of the core. 0.5 (plastic incompressibility): the
+  /// strains that close a clearance are plastic (a few %), next to which the elastic part
+  /// (nu = 0.3 on fy / E = 0.0013-0.0017) is negligible.
+  double ratio = 0.5;
+
+  /// Throws ParameterError naming the key (expansion_nodes, extent_y, extent_z, core_expansion).
+  void validate() const;
+};
+
 class CasingContact final : public Element {
 public:
   /// nodes: {core node, casing node}, coincident in the reference configuration up to the
   /// initial imperfection (the relative displacement counts from the initial offset).
+  /// `expansion`: the core's expansion at the station (its neighbour nodes join the link's
+  /// nodes after these two, once each); none: the core keeps its size.
   CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
                 const Vector3& casing_position, const CasingContactParameters& parameters,
-                bool skip_open_links = true);
+                bool skip_open_links = true,
+                const std::optional<CoreExpansion>& expansion = std::nullopt);
 
   std::span<const int> nodes() const override { return nodes_; }
   bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
@@ -64,6 +99,12 @@ public:
 
   /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N).
   const Vector3& link_force() const { return link_force_; }
+  /// Bearing force of each face, +y, -y, +z, -z (N, >= 0; trial state).
+  const std::array<double, 4>& face_forces() const { return face_forces_; }
+  /// Friction's normal force: the sum of the four faces' bearing forces (N; trial state).
+  double normal_force() const { return normal_force_; }
+  /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
+  const Eigen::Vector2d& core_expansion() const { return expansion_; }
   /// Largest mortar damage over the four faces (trial state).
   double max_mortar_damage() const;
   /// Whether any face is in contact (trial state).
@@ -78,8 +119,21 @@ private:
     std::array<double, 4> bearing_strain{}; ///< for the free energy
   };
 
-  std::array<int, 2> nodes_;
+  /// The core's axial strain at the station from the chord of its neighbour nodes, with the
+  /// chord's current unit direction and length.
+  struct Chord {
+    double strain = 0.0;
+    Vector3 direction = Vector3::Zero();
+    double length = 0.0;
+  };
+
+  std::vector<int> nodes_; ///< core, casing, then the expansion's neighbours not yet listed
   Vector3 initial_offset_;
+  /// Indices into nodes_ of the chord's two ends (-1: no expansion).
+  std::array<int, 2> chord_ends_{-1, -1};
+  double chord_initial_length_ = 0.0;
+  /// de/deps per direction: -nu_c h / 2 (mm), y and z.
+  Eigen::Vector2d expansion_per_strain_ = Eigen::Vector2d::Zero();
   CasingContactParameters parameters_;
   /// Bearing law of the y faces and of the z faces (their characteristic lengths are the
   /// bearing depths, so that crushing dissipates G_f per unit area of face).
@@ -89,16 +143,31 @@ private:
   State trial_;
   Vector3 relative_ = Vector3::Zero(); ///< local relative displacement (axis, y, z)
   Vector3 link_force_ = Vector3::Zero();
+  std::array<double, 4> face_forces_{};
+  double normal_force_ = 0.0;
+  Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;
-  Eigen::MatrixXd open_tangent_; ///< 12 x 12 tangent of an open link (layer springs only)
+  Eigen::MatrixXd open_tangent_; ///< 6n x 6n tangent of an open link (layer springs only)
   long open_evaluations_ = 0;
 
+  bool has_expansion() const { return chord_ends_[0] >= 0; }
+  Chord chord(std::span<const NodeConfiguration> configuration) const;
+  /// Penetration of a face (0: +y, 1: -y, 2: +z, 3: -z) at relative_ and expansion_ (shared
+  /// by the open test and the general path so that they decide alike).
+  double penetration(int face) const;
   /// The local tangent (axis, y, z) when every face is open, and the force and tangent
-  /// scattered onto the two nodes (shared by both paths so that they round alike).
+  /// scattered onto the core and casing nodes (shared by both paths so that they round alike).
   Matrix3 open_local_tangent() const;
   void scatter(const Vector3& local_force, const Matrix3& local_tangent, Eigen::VectorXd& force,
                Eigen::MatrixXd& tangent) const;
+  /// Adds the expansion's forces on the chord's ends and its tangent terms, from the bearing
+  /// force S and stiffness K per direction (sums over its two faces), dN/d(relative) and
+  /// friction's dT/dN.
+  void add_expansion_terms(const Chord& core_chord, const Eigen::Vector2d& direction_force,
+                           const Eigen::Vector2d& direction_stiffness,
+                           const Eigen::RowVector3d& normal_rate, double friction_normal_rate,
+                           Eigen::VectorXd& force, Eigen::MatrixXd& tangent) const;
 };
 
 } // namespace brb::element

@@ -73,6 +73,10 @@ struct CasingSpec {
   double gap_z = 0.0; ///< clearance per side along z (mm)
   /// Coulomb coefficient of the core-casing interface (BRB_SOURCE_FACTS section 4: 0.1).
   double friction_coefficient = 0.1;
+  /// nu_c of the core's lateral expansion in the contact links (element::CoreExpansion):
+  /// lateral over axial strain, 0.5 (plastic incompressibility) by default, 0: the core keeps
+  /// its size (the links then see only the core's lateral motion).
+  double core_expansion = 0.5;
   /// Unbonding-layer spring per unit length of core (N/mm per mm), always active in both
   /// transverse directions. Absent: kDefaultLayerRatio times the mortar's bearing stiffness
   /// per unit length, E_mortar x (core extent) / (mortar thickness).

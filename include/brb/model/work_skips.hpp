@@ -4,8 +4,10 @@
 // (material, element) so that they do not depend on the model layer; the builders of the
 // model layer (build_brace_model, add_brace_to_model) and of frames hand them down.
 //
-//   open_links          CasingContact: a link whose faces are all open returns its constant
-//                       layer tangent (cached) without the bearing and friction laws. Exact.
+//   open_links          CasingContact: a link whose faces are all open (penetration with the
+//                       core's expansion <= 0) returns its constant layer tangent (cached,
+//                       sized for its 2 to 4 nodes) without the bearing and friction laws.
+//                       Exact.
 //   elastic_fast_path   SteelUniaxial: a fiber below yield and below its damage threshold
 //                       returns E and its committed state without the return map's energy
 //                       bookkeeping. Exact (the skipped terms add zero).
