@@ -63,7 +63,8 @@ TEST(CoreExpansion, EachLinkHoldsItsStationsNeighbourCoreNodesInBothBraceForms) 
   // Each link: core node, casing node, then the core nodes before and after the station (at
   // an end station only the next or the previous one: the chord starts at the station); the
   // condensed BRBElement's internal brace has the same links; core_expansion 0: two nodes.
-  const model::BraceSpec spec = test::girona_d3_restrained(4);
+  model::BraceSpec spec = test::girona_d3_restrained(4);
+  spec.casing->core_expansion = 0.5;
   const model::BraceModel brace = model::build_brace_model(spec);
   const model::CasingModel& casing = *brace.casing;
   const std::vector<int>& core = casing.core_nodes;

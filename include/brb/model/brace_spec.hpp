@@ -74,9 +74,12 @@ struct CasingSpec {
   /// Coulomb coefficient of the core-casing interface (BRB_SOURCE_FACTS section 4: 0.1).
   double friction_coefficient = 0.1;
   /// nu_c of the core's lateral expansion in the contact links (element::CoreExpansion):
-  /// lateral over axial strain, 0.5 (plastic incompressibility) by default, 0: the core keeps
-  /// its size (the links then see only the core's lateral motion).
-  double core_expansion = 0.5;
+  /// lateral over axial strain, 0.5 for plastic incompressibility; 0 (the default): the core
+  /// keeps its size (two-node links that see only the core's lateral motion). Off by default
+  /// while the solver's path through the mode jumps is not robust to it (README, "Core expansion is
+  /// opt-in"): on Girona D1 with 8 elements, nu_c = 0.5 sends a bowed core onto a branch
+  /// that punches a bearing face through at 0.75 d_y, where nu_c = 0 and 1e-9 do not.
+  double core_expansion = 0.0;
   /// Unbonding-layer spring per unit length of core (N/mm per mm), always active in both
   /// transverse directions. Absent: kDefaultLayerRatio times the mortar's bearing stiffness
   /// per unit length, E_mortar x (core extent) / (mortar thickness).
