@@ -142,7 +142,6 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   trial_ = committed_;
   trial_.bearing_strain.fill(0.0);
   face_forces_.fill(0.0);
-  normal_force_ = 0.0;
 
   if (skip_open_links_ && !(penetration(0) > 0.0) && !(penetration(1) > 0.0) &&
       !(penetration(2) > 0.0) && !(penetration(3) > 0.0)) {
@@ -208,7 +207,6 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     local_force[direction] += parameters_.layer_stiffness * relative_[direction];
     local_tangent(direction, direction) += parameters_.layer_stiffness;
   }
-  normal_force_ = normal_force;
 
   // Coulomb friction along the axis with the total bearing force as normal force. Called
   // with dN/dg = 1 so that the tangent's first column is dT/dN.

@@ -34,11 +34,11 @@ struct Protocol {
   struct Excursion {
     double start = 0.0, duration = 0.0, from = 0.0, to = 0.0;
   };
-  std::vector<double> targets;     // d_0 = 0, d_1, ...
   std::vector<double> point_times; // t_k: when the ramp passes d_k (t_0 = 0)
   std::vector<Excursion> excursions;
 
-  Protocol(std::vector<double> points, double time_per_deformation) : targets(std::move(points)) {
+  /// `targets`: d_0 = 0, d_1, ... (at least two).
+  Protocol(const std::vector<double>& targets, double time_per_deformation) {
     point_times.push_back(0.0);
     double start = 0.0;
     std::size_t first = 0; // the excursion's first point
@@ -66,7 +66,7 @@ struct Protocol {
       if (t < excursion.start + excursion.duration)
         return excursion.from + (excursion.to - excursion.from) *
                                     smooth_ramp(t - excursion.start, excursion.duration);
-    return targets.back();
+    return excursions.back().to; // the last point
   }
 };
 
@@ -183,7 +183,7 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
                              : settings.time_per_deformation > 0.0
                                  ? settings.time_per_deformation
                                  : 20.0 * run.first_axial_period / yield_deformation;
-  const Protocol protocol(std::move(targets), run.time_per_deformation);
+  const Protocol protocol(targets, run.time_per_deformation);
 
   // supports and the driven face (its displacement: the brace elongation, halved in a half model)
   SolidLoading loading;

@@ -102,7 +102,9 @@ public:
   /// Bearing force of each face, +y, -y, +z, -z (N, >= 0; trial state).
   const std::array<double, 4>& face_forces() const { return face_forces_; }
   /// Friction's normal force: the sum of the four faces' bearing forces (N; trial state).
-  double normal_force() const { return normal_force_; }
+  double normal_force() const {
+    return face_forces_[0] + face_forces_[1] + face_forces_[2] + face_forces_[3];
+  }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
   /// Largest mortar damage over the four faces (trial state).
@@ -144,7 +146,6 @@ private:
   Vector3 relative_ = Vector3::Zero(); ///< local relative displacement (axis, y, z)
   Vector3 link_force_ = Vector3::Zero();
   std::array<double, 4> face_forces_{};
-  double normal_force_ = 0.0;
   Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;

@@ -44,14 +44,7 @@ public:
                 std::string& failure) {
     const std::size_t points = sections_.size();
     const double elongation = deformation[0];
-    // Start from the committed strain distribution shifted by the new mean strain.
-    double committed_mean = 0.0;
-    for (std::size_t k = 0; k < points; ++k) {
-      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
-    }
-    for (std::size_t k = 0; k < points; ++k) {
-      axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
-    }
+    start_from_committed(elongation);
 
     std::array<Eigen::Vector2d, kMaxPoints> curvature;
     for (std::size_t k = 0; k < points; ++k)
@@ -73,8 +66,7 @@ public:
       }
     }
     if (!converged) {
-      for (std::size_t k = 0; k < points; ++k)
-        axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
+      start_from_committed(elongation);
       converged = solve_axial_in_brackets(elongation, curvature, axial_force);
     }
     if (!converged) {
@@ -160,6 +152,16 @@ public:
 private:
   static constexpr int kNewtonAxialIterations = 12;
   static constexpr int kBracketIterations = 200;
+
+  /// The starting axial strains: the committed distribution shifted to the new mean strain
+  /// u_bar / L0.
+  void start_from_committed(double elongation) {
+    double committed_mean = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
+  }
 
   /// Evaluates every section at its trial axial strain and the given curvatures.
   bool evaluate_points(const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
