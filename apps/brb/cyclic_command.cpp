@@ -128,9 +128,11 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
   const analysis::EnergyBalance& balance = result.energy_balance;
   out << "  energy balance: external work " << significant(balance.external_work, 6)
       << " N mm, stored " << significant(balance.stored, 6) << ", dissipated "
-      << significant(balance.dissipated, 6) << ", released in jumps "
+      << significant(balance.dissipated, 6) << ", integration misfit "
+      << significant(balance.integration_misfit, 3) << ", released in jumps "
       << significant(balance.released_in_jumps, 6) << ", relative error "
-      << significant(balance.relative_error(), 3) << "\n"
+      << significant(balance.relative_error(), 3) << " (laws' balance "
+      << significant(balance.law_relative_error(), 3) << ")\n"
       << "  wrote " << files.hysteresis.string() << "\n"
       << "        " << files.summary.string() << "\n";
   if (files.element_history)
@@ -208,6 +210,19 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           "change of stored and dissipated energy| would exceed this fraction of the gross "
           "work; default 1e-2 (a guard against steps that jump to a far branch), 0: off")
       ->type_name("FRACTION");
+  cyclic
+      ->add_option_function<double>(
+          "--balance-tolerance",
+          [&command](const double& tolerance) {
+            if (!(std::isfinite(tolerance) && tolerance >= 0.0 && tolerance < 1.0))
+              throw CLI::ValidationError("--balance-tolerance", "must be a number in [0, 1)");
+            command.balance_tolerance = tolerance;
+          },
+          "Balance control: a step is cut while the energy balance's running error (external "
+          "work - stored - dissipated - integration misfit - released, summary.json's "
+          "relative_error) would exceed this fraction of the gross work; default 0 (off); "
+          "brb validate uses 5e-7")
+      ->type_name("FRACTION");
   cyclic->add_flag("--histories", command.histories,
                    "Also write element_history.csv: core strain, dissipated energy, cumulative "
                    "inelastic deformation, lateral displacements, half-waves, damage and flags "
@@ -240,6 +255,7 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
 
   analysis::NewtonSettings settings;
   settings.energy_tolerance = command.energy_tolerance;
+  settings.balance_tolerance = command.balance_tolerance;
   const analysis::CyclicTestResult result =
       analysis::run_cyclic_test(brace, protocol.deformation, protocol.cycle,
                                 protocol.cycle_amplitude, settings, command.histories);

@@ -24,6 +24,8 @@ struct CyclicCommand {
   /// value 1e-2); 0 turns it off. Tight values cost many substeps on restrained cores
   /// (README, "Energy balance").
   double energy_tolerance = analysis::NewtonSettings::kEnergyGuard;
+  /// Balance control (NewtonSettings::balance_tolerance; default off).
+  double balance_tolerance = 0.0;
   /// Also write DIR/element_history.csv: the element outputs after every step.
   bool histories = false;
 };

@@ -90,7 +90,7 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
     if (record_history_) {
       const EnergyBalance& energy = analysis_.energy();
       result_.history.push_back({step.step, core_strain(),
-                                 energy.dissipated + energy.released_in_jumps,
+                                 energy.dissipated + energy.released_by_laws,
                                  tracker_.indicators()});
     }
     const bool cycle_ends = k + 1 == deformation.size() || cycle[k + 1] != step.cycle;

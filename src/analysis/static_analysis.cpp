@@ -27,8 +27,17 @@ std::string readable(double value) {
 } // namespace
 
 double EnergyBalance::relative_error() const {
-  return std::abs(external_work - stored - dissipated - released_in_jumps) /
+  return std::abs(external_work - stored - dissipated - integration_misfit - released_in_jumps) /
          std::max(gross_work, 1e-30);
+}
+
+double EnergyBalance::law_relative_error() const {
+  return std::abs(external_work - stored - dissipated - released_by_laws) /
+         std::max(gross_work, 1e-30);
+}
+
+double EnergyBalance::relative_misfit() const {
+  return std::abs(integration_misfit) / std::max(gross_work, 1e-30);
 }
 
 StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
@@ -140,7 +149,7 @@ void StaticAnalysis::restore_path_state(const AnalysisPathState& state) {
   committed_stable_ = state.stable;
   energy_ = state.energy;
   energy_error_sum_ = state.energy_error_sum;
-  released_at_commit_ = energy_.released_in_jumps;
+  released_at_commit_ = energy_.released_by_laws;
 }
 
 void StaticAnalysis::use_load_control(const Eigen::VectorXd& reference_load) {
@@ -432,6 +441,21 @@ bool StaticAnalysis::within_energy_tolerance(const StepEnergy& step) const {
          settings_.energy_tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
 }
 
+bool StaticAnalysis::within_balance_tolerance(const StepEnergy& step) const {
+  if (!(settings_.balance_tolerance > 0.0))
+    return true;
+  const double change = step.end.stored + step.end.dissipated + step.end.integration_misfit -
+                        energy_.stored - energy_.dissipated - energy_.integration_misfit;
+  const double step_error = step.work - change;
+  const double round_off =
+      1e-13 * (std::abs(step.end.stored) + std::abs(step.end.dissipated) + std::abs(step.work));
+  // the committed balance's signed error (the sum of the committed steps' errors)
+  const double committed_error = energy_.external_work - energy_.stored - energy_.dissipated -
+                                 energy_.integration_misfit - energy_.released_in_jumps;
+  return std::abs(committed_error + step_error) <=
+         settings_.balance_tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
+}
+
 void StaticAnalysis::commit(double control, const StepEnergy& step) {
   const double energy_before = energy_.stored + energy_.dissipated + released_at_commit_;
   energy_.external_work += step.work;
@@ -448,9 +472,10 @@ void StaticAnalysis::commit(double control, const StepEnergy& step) {
   }
   energy_.stored = step.end.stored;
   energy_.dissipated = step.end.dissipated;
-  released_at_commit_ = energy_.released_in_jumps;
+  energy_.integration_misfit = step.end.integration_misfit;
+  released_at_commit_ = energy_.released_by_laws;
   energy_error_sum_ +=
-      step.work - (energy_.stored + energy_.dissipated + energy_.released_in_jumps - energy_before);
+      step.work - (energy_.stored + energy_.dissipated + energy_.released_by_laws - energy_before);
 }
 
 void StaticAnalysis::revert() {
@@ -524,10 +549,11 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     ++far_branch_cuts_;
     return halve(from, to, depth, report);
   }
-  if (attempt.converged && !within_energy_tolerance(step)) {
+  if (attempt.converged && !(within_energy_tolerance(step) && within_balance_tolerance(step))) {
     if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
-      // A kink inside the step (yield, contact): halve it until the trapezoidal work and
-      // the energies agree (NewtonSettings::energy_tolerance).
+      // A kink inside the step (yield, contact), or kinematics the trapezoidal rule does not
+      // follow: halve it until the trapezoidal work and the energies agree
+      // (NewtonSettings::energy_tolerance, balance_tolerance).
       ++report.energy_cuts;
       ++energy_cuts_;
       return halve(from, to, depth, report);
@@ -683,8 +709,10 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
   Attempt total;
   if (!assemble(true, total.failure))
     return total;
-  // The energy released is what the jump takes out of the system: the drop of stored plus
-  // material-dissipated energy, plus the work the (constant) loads do during it.
+  // The energy released is what the jump takes out of the system: the drop of the elements'
+  // stress work (stored plus material-dissipated energy plus the integration misfit; by the
+  // laws alone in EnergyBalance::released_by_laws), plus the work the (constant) loads do
+  // during it.
   const element::ElementEnergy before = element_energy();
   const double control_force_before = internal_force_.dot(control_rate_);
   Eigen::VectorXd travelled = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(free_dofs_.size()));
@@ -734,8 +762,11 @@ StaticAnalysis::Attempt StaticAnalysis::pseudo_transient(double control) {
             constant_load_[dof] + (kinematic_control() ? 0.0 : control * reference_load_[dof]);
         load_work += load * travelled[static_cast<Eigen::Index>(e)];
       }
-      energy_.released_in_jumps +=
+      energy_.released_by_laws +=
           before.stored + before.dissipated + load_work - after.stored - after.dissipated;
+      energy_.released_in_jumps += before.stored + before.dissipated + before.integration_misfit +
+                                   load_work - after.stored - after.dissipated -
+                                   after.integration_misfit;
       // External work of this step: the control moved first (on the old branch, ending at
       // control_force_before), then the jump at fixed control, under constant loads.
       const double control_work =
@@ -757,6 +788,7 @@ element::ElementEnergy StaticAnalysis::element_energy() const {
     const auto energy = element->energy();
     total.stored += energy.stored;
     total.dissipated += energy.dissipated;
+    total.integration_misfit += energy.integration_misfit;
   }
   return total;
 }

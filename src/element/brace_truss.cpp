@@ -89,21 +89,32 @@ bool BraceTruss::evaluate(std::span<const NodeConfiguration> configuration, Eige
 }
 
 void BraceTruss::commit() {
+  committed_work_ = core_stress_work();
   committed_ = trial_;
   committed_strain_ = strain_;
+  committed_force_ = axial_force_;
 }
 
 void BraceTruss::revert_to_committed() {
   trial_ = committed_;
   strain_ = committed_strain_;
+  axial_force_ = committed_force_;
+}
+
+double BraceTruss::core_stress_work() const {
+  return committed_work_ + 0.5 * (committed_force_ + axial_force_) * (strain_ - committed_strain_) *
+                               parameters_.yielding_length;
 }
 
 ElementEnergy BraceTruss::energy() const {
   const double volume = parameters_.core_area * parameters_.yielding_length;
   // core: free energy of the law; end zones: N^2 f_e / 2 (elastic)
-  return {volume * law_.free_energy(trial_, strain_) +
-              0.5 * axial_force_ * axial_force_ * parameters_.end_flexibility,
-          volume * material::SteelUniaxial::dissipated_energy(trial_)};
+  const double core_stored = volume * law_.free_energy(trial_, strain_);
+  ElementEnergy energy{core_stored +
+                           0.5 * axial_force_ * axial_force_ * parameters_.end_flexibility,
+                       volume * material::SteelUniaxial::dissipated_energy(trial_)};
+  energy.integration_misfit = core_stress_work() - core_stored - energy.dissipated;
+  return energy;
 }
 
 } // namespace brb::element

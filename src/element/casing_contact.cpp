@@ -84,6 +84,10 @@ CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_posit
   }
   Eigen::VectorXd unused_force;
   scatter(Vector3::Zero(), open_local_tangent(), unused_force, open_tangent_);
+  // the faces' penetrations in the initial configuration (relative_ = 0, no expansion)
+  for (int face = 0; face < 4; ++face)
+    committed_.penetration[face] = penetration(face);
+  trial_ = committed_;
 }
 
 CasingContact::Chord CasingContact::chord(std::span<const NodeConfiguration> configuration) const {
@@ -159,6 +163,7 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     force.segment<3>(0) = global_force;
     force.segment<3>(6) = -global_force;
     tangent = open_tangent_;
+    record_stress_work();
     return true;
   }
 
@@ -217,6 +222,7 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   local_tangent(0, 0) = friction.tangent(1, 1);
   local_tangent.row(0) += friction.tangent(1, 0) * normal_rate;
   link_force_ = local_force;
+  record_stress_work();
   scatter(local_force, local_tangent, force, tangent);
   if (has_expansion() && penetrated)
     add_expansion_terms(core_chord, direction_force, direction_stiffness, normal_rate,
@@ -270,6 +276,28 @@ void CasingContact::add_expansion_terms(const Chord& core_chord,
   }
 }
 
+void CasingContact::record_stress_work() {
+  // Trapezoidal rule on each face's force and signed penetration (the kinematic measure,
+  // also when open, so that a face opening inside a step is summed as the external work
+  // is), on the friction force and the axial relative displacement, and on the layer springs
+  // (linear: exact).
+  double work = 0.0;
+  for (int face = 0; face < 4; ++face) {
+    trial_.penetration[face] = penetration(face);
+    trial_.face_force[face] = face_forces_[face];
+    work += (committed_.face_force[face] + face_forces_[face]) *
+            (trial_.penetration[face] - committed_.penetration[face]);
+  }
+  trial_.relative = relative_;
+  trial_.friction_force = link_force_[0];
+  work += (committed_.friction_force + link_force_[0]) * (relative_[0] - committed_.relative[0]);
+  for (int direction = 1; direction <= 2; ++direction) {
+    work += parameters_.layer_stiffness * (committed_.relative[direction] + relative_[direction]) *
+            (relative_[direction] - committed_.relative[direction]);
+  }
+  trial_.stress_work = committed_.stress_work + 0.5 * work;
+}
+
 ElementEnergy CasingContact::energy() const {
   ElementEnergy energy;
   const double layer = parameters_.layer_stiffness;
@@ -287,6 +315,7 @@ ElementEnergy CasingContact::energy() const {
   const double stick = relative_[0] - trial_.friction.slip[0];
   energy.stored += 0.5 * parameters_.tangential_stiffness * stick * stick;
   energy.dissipated += trial_.friction.dissipated_energy;
+  energy.integration_misfit = trial_.stress_work - energy.stored - energy.dissipated;
   return energy;
 }
 

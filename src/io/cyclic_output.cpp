@@ -51,10 +51,16 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
                            {"energy_cuts", result.energy_cuts},
                            {"far_branch_cuts", result.far_branch_cuts},
                            {"energy_tolerance_missed", result.energy_tolerance_missed}};
-  summary["energy_balance"] = Json{
-      {"external_work", balance.external_work}, {"stored", balance.stored},
-      {"dissipated", balance.dissipated},       {"released_in_jumps", balance.released_in_jumps},
-      {"gross_work", balance.gross_work},       {"relative_error", balance.relative_error()}};
+  summary["energy_balance"] = Json{{"external_work", balance.external_work},
+                                   {"stored", balance.stored},
+                                   {"dissipated", balance.dissipated},
+                                   {"integration_misfit", balance.integration_misfit},
+                                   {"released_in_jumps", balance.released_in_jumps},
+                                   {"released_by_laws", balance.released_by_laws},
+                                   {"gross_work", balance.gross_work},
+                                   {"relative_error", balance.relative_error()},
+                                   {"law_relative_error", balance.law_relative_error()},
+                                   {"relative_misfit", balance.relative_misfit()}};
   const analysis::BraceIndicators& indicators = result.indicators;
   summary["element"] =
       Json{{"max_steel_damage", indicators.max_steel_damage},

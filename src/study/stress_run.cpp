@@ -87,15 +87,16 @@ void run_brace(const BraceStress& stress, StressResult& result) {
   }
   const analysis::EnergyBalance& energy = run.energy_balance;
   nan.all(std::initializer_list<double>{energy.external_work, energy.stored, energy.dissipated,
-                                        energy.released_in_jumps, energy.gross_work,
-                                        run.energy_total, run.max_tension, run.max_compression});
+                                        energy.released_in_jumps, energy.integration_misfit,
+                                        energy.gross_work, run.energy_total, run.max_tension,
+                                        run.max_compression});
   count_indicators(nan, run.indicators);
   result.nan_count = nan.count();
 
   // Over the gross work (the sum of |work| per substep, the README's relative_error): the
   // net work of nearly elastic cycles is close to zero, so a misfit over it measures nothing.
-  const double misfit =
-      energy.external_work - energy.stored - energy.dissipated - energy.released_in_jumps;
+  const double misfit = energy.external_work - energy.stored - energy.dissipated -
+                        energy.integration_misfit - energy.released_in_jumps;
   result.input_work = energy.gross_work;
   result.energy_error = relative_to(misfit, energy.gross_work);
   result.fallbacks.substeps = std::max(0, run.substeps - result.steps);

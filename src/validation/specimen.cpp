@@ -373,8 +373,8 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
   specimen.metrics_file = directory / metrics_file_name;
   const nlohmann::json document = io::read_json_file(specimen.metrics_file);
   const JsonValue root(document, specimen.metrics_file.string());
-  root.expect_object({"id", "title", "source", "brace", "protocol", "refinements", "reference",
-                      "comparison", "role", "calibrated_on", "notes", "metrics"},
+  root.expect_object({"id", "title", "source", "brace", "protocol", "refinements", "solver",
+                      "reference", "comparison", "role", "calibrated_on", "notes", "metrics"},
                      "a specimen's metrics file (an object)");
 
   const JsonValue id = root.at("id", "the specimen's id, the name of its folder");
@@ -400,6 +400,15 @@ Specimen read_specimen(const fs::path& directory, const fs::path& shared_directo
                specimen.protocol_file.filename().string() + "\")");
   }
   specimen.refinements = read_refinements(root.at("refinements", "e.g. [1, 2, 4]"));
+  if (const auto solver = root.find("solver")) {
+    solver->expect_object({"balance_tolerance"}, "the solver's settings for this specimen");
+    if (const auto tolerance = solver->find("balance_tolerance")) {
+      specimen.balance_tolerance =
+          tolerance->number("the balance control's tolerance (a fraction of the gross work)");
+      if (!(specimen.balance_tolerance >= 0.0 && specimen.balance_tolerance < 1.0))
+        throw tolerance->error("balance_tolerance must be in [0, 1) (0: off)");
+    }
+  }
   if (const auto record = root.find("reference"))
     specimen.record = read_record(*record, directory, shared_directory);
   if (const auto comparison = root.find("comparison")) {

@@ -93,19 +93,23 @@ TEST(ValidateCli, RunsEveryRefinementAndWritesTheReports) {
     EXPECT_TRUE(fs::is_regular_file(outputs / "hysteresis.csv"));
     EXPECT_TRUE(fs::is_regular_file(outputs / "summary.json"));
     const json& checks = runs[i].at("checks");
-    ASSERT_EQ(checks.size(), 5u); // completion, energy balance, then the three metrics
+    // completion, energy balance, integration misfit, then the three metrics
+    ASSERT_EQ(checks.size(), 6u);
     EXPECT_EQ(checks[0].at("status"), "pass");
     // The energy balance is judged against 1e-6, whatever the solver gives.
     const double balance = checks[1].at("value").get<double>();
     EXPECT_EQ(checks[1].at("status"), balance <= 1e-6 ? "pass" : "fail");
-    EXPECT_EQ(checks[2].at("name"), "peak tension");
-    EXPECT_EQ(checks[2].at("status"), "pass");
-    EXPECT_GT(checks[2].at("value").get<double>(), kYieldForce);
-    EXPECT_EQ(checks[3].at("status"), "pass");
-    EXPECT_EQ(checks[4].at("status"), "reported");
-    // The loop energy is the summary's energy of cycle 1 (same trapezoidal rule).
+    EXPECT_EQ(checks[2].at("status"), "reported");
     const json summary = json::parse(read_file(outputs / "summary.json"));
-    EXPECT_NEAR(checks[4].at("value").get<double>(),
+    EXPECT_EQ(checks[2].at("value").get<double>(),
+              summary.at("energy_balance").at("relative_misfit").get<double>());
+    EXPECT_EQ(checks[3].at("name"), "peak tension");
+    EXPECT_EQ(checks[3].at("status"), "pass");
+    EXPECT_GT(checks[3].at("value").get<double>(), kYieldForce);
+    EXPECT_EQ(checks[4].at("status"), "pass");
+    EXPECT_EQ(checks[5].at("status"), "reported");
+    // The loop energy is the summary's energy of cycle 1 (same trapezoidal rule).
+    EXPECT_NEAR(checks[5].at("value").get<double>(),
                 summary.at("cycles").at(0).at("energy").get<double>(),
                 1e-9 * summary.at("cycles").at(0).at("energy").get<double>());
   }
@@ -206,10 +210,10 @@ TEST(ValidateCli, ComparesWithAnExternalSolversCsvAndRefusesBadUnits) {
   ASSERT_TRUE(second.exit_code == 0 || second.exit_code == 1) << second.err;
   const json report = json::parse(read_file(folder / "report.json"));
   const json& checks = report.at("specimens").at(0).at("runs").at(0).at("checks");
-  ASSERT_EQ(checks.size(), 5u);
-  for (std::size_t i = 2; i < 5; ++i)
+  ASSERT_EQ(checks.size(), 6u);
+  for (std::size_t i = 3; i < 6; ++i)
     EXPECT_EQ(checks[i].at("status"), "pass") << checks[i].dump();
-  EXPECT_EQ(checks[4].at("value"), 1.0);
+  EXPECT_EQ(checks[5].at("value"), 1.0);
   // The failure needs the step history: written as `brb cyclic --histories` does.
   EXPECT_TRUE(fs::is_regular_file(folder / "tiny" / "out" / "x1" / "element_history.csv"));
 

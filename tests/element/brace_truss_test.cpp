@@ -108,7 +108,11 @@ TEST(BraceTruss, CyclicTestFollowsTheUniaxialSteelLawOnItsCoreStrain) {
               volume * material::SteelUniaxial::dissipated_energy(state),
               1e-9 * analysis.energy().dissipated);
   EXPECT_GT(analysis.energy().dissipated, 10.0 * brace.yield_force * dy); // it did yield
-  EXPECT_LT(analysis.energy().relative_error(), 1e-2);
+  EXPECT_LT(analysis.energy().law_relative_error(), 1e-2);
+  // The truss's kinematics are linear along its axis: with the laws' integration misfit (the
+  // core's trapezoidal work on its elongation; the end zones are linear) set apart, the
+  // balance holds to the equilibrium tolerance.
+  EXPECT_LT(analysis.energy().relative_error(), 1e-9);
 }
 
 TEST(BraceTruss, TangentMatchesCentralDifferencesInAnyDirection) {

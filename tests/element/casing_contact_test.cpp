@@ -442,5 +442,50 @@ TEST(CasingContactExpansion, WorkEqualsStoredPlusDissipatedAlongALoadingPath) {
   EXPECT_LT(largest_mismatch, 1e-4 * work); // at every point of the path, stored > 0 or not
 }
 
+TEST(CasingContact, StressWorkIsTheNodalForcesTrapezoidalWorkAndItsMisfitTheGapClosing) {
+  // Reference (by hand): a face closing inside a step. From rest the core moves 0.2 mm
+  // along y in one step: the face penetrates p = 0.2 - 0.12 = 0.08 mm with the elastic
+  // bearing force F = A E p / depth (depth 100 mm: no crushing). The trapezoidal rule sums
+  // F / 2 over the whole 0.2 mm, the law stores F p / 2: the misfit is F / 2 x 0.12 mm (the
+  // layer spring is linear and adds none).
+  const auto parameters = small_brb_contact(100.0);
+  Probe probe(parameters);
+  probe.move_core({0.0, 0.2, 0.0});
+  const double bearing_force = parameters.bearing_area_y * 17520.0 / 100.0 * 0.08;
+  EXPECT_NEAR(probe.contact.face_forces()[0], bearing_force, 1e-9 * bearing_force);
+  EXPECT_NEAR(probe.contact.energy().integration_misfit, 0.5 * bearing_force * 0.12,
+              1e-9 * bearing_force);
+
+  // Reference: along a coarse path (rotated axes; faces opening and closing, crushing,
+  // friction slip, in 400 steps) the trapezoidal work of the nodal forces equals stored +
+  // dissipated + integration misfit to round-off (the link's kinematics are linear), while
+  // the laws' own balance misses by the misfit, which is not small at this step.
+  auto rotated = small_brb_contact(10.0);
+  rotated.axes = Eigen::AngleAxisd(0.7, Vector3(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
+  Probe path(rotated);
+  const int steps = 400;
+  double work = 0.0;
+  Eigen::VectorXd previous_force = Eigen::VectorXd::Zero(12);
+  Vector3 previous_core = Vector3::Zero();
+  double largest_mismatch = 0.0;
+  for (int k = 1; k <= steps; ++k) {
+    const double t = 2.0 * std::numbers::pi * k / steps;
+    const Vector3 local(0.1 * std::sin(t), 0.5 * std::sin(2.0 * t), 0.2 * std::sin(3.0 * t));
+    const Vector3 core = rotated.axes * local;
+    path.move_core(core);
+    work +=
+        0.5 * (previous_force.segment<3>(0) + path.force.segment<3>(0)).dot(core - previous_core);
+    previous_force = path.force;
+    previous_core = core;
+    const ElementEnergy now = path.contact.energy();
+    largest_mismatch = std::max(
+        largest_mismatch, std::abs(work - now.stored - now.dissipated - now.integration_misfit));
+  }
+  const ElementEnergy energy = path.contact.energy();
+  EXPECT_GT(path.contact.max_mortar_damage(), 0.5);
+  EXPECT_LT(largest_mismatch, 1e-11 * work);
+  EXPECT_GT(std::abs(energy.integration_misfit), 1e-4 * work);
+}
+
 } // namespace
 } // namespace brb::element

@@ -155,6 +155,8 @@ int expect_open_links_bitwise(const std::optional<element::CoreExpansion>& expan
     }
     EXPECT_TRUE(same_bits(skipping.energy().stored, general.energy().stored));
     EXPECT_TRUE(same_bits(skipping.energy().dissipated, general.energy().dissipated));
+    EXPECT_TRUE(
+        same_bits(skipping.energy().integration_misfit, general.energy().integration_misfit));
     if (::testing::Test::HasFailure())
       return contact_points;
     contact_points += general.in_contact();

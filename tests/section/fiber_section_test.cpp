@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -103,6 +104,74 @@ TEST(FiberSection, TangentMatchesFiniteDifferencesAndCommitKeepsHistory) {
   const auto again = section.evaluate(loaded).force;
   section.revert_to_committed();
   EXPECT_NEAR((section.evaluate(loaded).force - again).norm(), 0.0, 1e-9);
+}
+
+TEST(FiberSection, StressWorkIsTheTrapezoidalRuleAndItsMisfitTheKinkOfFirstYield) {
+  // Reference (by hand): one fiber of area A, E = 210000, fy = 275, linear kinematic
+  // hardening H (uniaxial tangent Et = E H / (E + H)), strained from 0 to 3 eps_y in one
+  // step. The law's energy is the exact integral along the path, elastic to eps_y and then
+  // on the hardening branch: W = fy eps_y / 2 + (fy + s) / 2 (3 eps_y - eps_y), s the end
+  // stress; the trapezoidal work is s / 2 3 eps_y. The misfit is their difference, and a
+  // second step on the hardening branch (linear) adds none.
+  const auto steel = test::linear_mixed_steel(15000.0, 0.0);
+  const double area = 7.0;
+  FiberLayout one_fiber;
+  one_fiber.y = {0.0};
+  one_fiber.z = {0.0};
+  one_fiber.area = {area};
+  FiberSection section(one_fiber, SteelUniaxial(steel, 1.0), 8e4);
+  const double E = steel.youngs_modulus, fy = steel.yield_stress;
+  const double yield_strain = fy / E;
+  const double tangent = E * 15000.0 / (E + 15000.0);
+  const double end_stress = fy + tangent * 2.0 * yield_strain;
+  section.evaluate(SectionVector(3.0 * yield_strain, 0.0, 0.0));
+  EXPECT_NEAR(section.fiber_stresses()[0], end_stress, 1e-9);
+  const double trapezoid = 0.5 * end_stress * 3.0 * yield_strain * area;
+  const double exact =
+      (0.5 * fy * yield_strain + 0.5 * (fy + end_stress) * 2.0 * yield_strain) * area;
+  EXPECT_NEAR(section.stress_work(), trapezoid, 1e-12 * trapezoid);
+  EXPECT_NEAR(section.stored_energy() + section.dissipated_energy(), exact, 1e-9 * exact);
+  EXPECT_NEAR(section.integration_misfit(), trapezoid - exact, 1e-9 * exact);
+  EXPECT_GT(std::abs(trapezoid - exact), 0.05 * exact); // the kink is not small here
+
+  // committed: a step along the hardening branch (stress linear in strain) adds no misfit
+  section.commit();
+  const double misfit_after_yield = section.integration_misfit();
+  section.evaluate(SectionVector(5.0 * yield_strain, 0.0, 0.0));
+  EXPECT_NEAR(section.integration_misfit(), misfit_after_yield, 1e-9 * exact);
+  // a reverted trial leaves the committed work
+  section.revert_to_committed();
+  EXPECT_NEAR(section.stress_work(), trapezoid, 1e-12 * trapezoid);
+}
+
+TEST(FiberSection, IntegrationMisfitFallsWithTheSquareOfTheStep) {
+  // Reference: the trapezoidal rule's error over a kinked path; a cycle to +-4 eps_y in n
+  // equal steps (nonlinear Chaboche and Voce hardening, bending too): the misfit's size
+  // falls like (1 / n)^2 (ratio about 4 per halving; bounds 2.5..6), and stays a small part
+  // of the work.
+  const auto steel = test::chaboche_voce_steel();
+  const double yield_strain = steel.yield_stress / steel.youngs_modulus;
+  const auto misfit_in = [&](int steps) {
+    FiberSection section(mesh_rectangle(20.0, 10.0, 2, 10), SteelUniaxial(steel, 1.0), 8e4);
+    const std::array<double, 3> turns{4.0, -4.0, 0.0};
+    double at = 0.0;
+    for (const double turn : turns) {
+      const double target = turn * yield_strain;
+      const double from = at;
+      for (int k = 1; k <= steps; ++k) {
+        at = from + (target - from) * k / steps;
+        section.evaluate(SectionVector(at, 0.3 * at / 10.0, 0.0));
+        section.commit();
+      }
+    }
+    return std::abs(section.integration_misfit()) / std::abs(section.stress_work());
+  };
+  const double coarse = misfit_in(10), fine = misfit_in(20), finer = misfit_in(40);
+  EXPECT_GT(coarse / fine, 2.5);
+  EXPECT_LT(coarse / fine, 6.0);
+  EXPECT_GT(fine / finer, 2.5);
+  EXPECT_LT(fine / finer, 6.0);
+  EXPECT_LT(coarse, 0.05);
 }
 
 } // namespace

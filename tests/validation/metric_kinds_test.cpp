@@ -306,10 +306,21 @@ TEST(AutomaticChecks, CompletionAndEnergyBalanceAgainstOneInAMillion) {
   result.energy_balance.gross_work = 1000.0;        // the balance's scale (EnergyBalance)
   result.energy_balance.dissipated = 1000.0 - 5e-4; // relative error 5e-7
   auto checks = brb::validation::automatic_checks(result);
-  ASSERT_EQ(checks.size(), 2u);
+  ASSERT_EQ(checks.size(), 3u);
   EXPECT_EQ(checks[0].status, CheckStatus::pass);
   EXPECT_EQ(checks[1].status, CheckStatus::pass);
   EXPECT_NEAR(*checks[1].value, 5e-7, 1e-12);
+  EXPECT_EQ(checks[2].status, CheckStatus::reported);
+  EXPECT_EQ(*checks[2].value, 0.0);
+  // The integration misfit is part of the balance (external = stored + dissipated +
+  // misfit + released) and is reported on its own, relative to the gross work.
+  result.energy_balance.dissipated = 1000.0 - 0.1;
+  result.energy_balance.integration_misfit = 0.1 - 5e-4;
+  checks = brb::validation::automatic_checks(result);
+  EXPECT_EQ(checks[1].status, CheckStatus::pass);
+  EXPECT_NEAR(*checks[1].value, 5e-7, 1e-12);
+  EXPECT_NEAR(*checks[2].value, 1e-4 - 5e-7, 1e-12);
+  result.energy_balance.integration_misfit = 0.0;
   result.energy_balance.dissipated = 1000.0 - 2e-3; // 2e-6
   result.completed = false;
   result.stop_reason = "step 12: no convergence";

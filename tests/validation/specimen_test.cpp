@@ -70,6 +70,12 @@ TEST(Specimen, ReadsAValidFile) {
   EXPECT_FALSE(specimen.metrics[3].reference);
   EXPECT_EQ(specimen.metrics[4].tolerance->kind, Tolerance::Kind::absolute);
   EXPECT_FALSE(specimen.record);
+  EXPECT_EQ(specimen.balance_tolerance, 0.0); // the balance control is off unless asked
+
+  json with_solver = valid_metrics();
+  with_solver["solver"] = {{"balance_tolerance", 5e-7}};
+  const fs::path other = write_specimen(scratch, with_solver);
+  EXPECT_EQ(read_specimen(other, scratch.path()).balance_tolerance, 5e-7);
 }
 
 TEST(Specimen, ResolvesASharedRecordAndConvertsItsUnits) {
@@ -137,6 +143,16 @@ INSTANTIATE_TEST_SUITE_P(
                            "/refinements/1"},
         InvalidMetricsCase{"NoRefinement", [](json& m) { m["refinements"] = json::array(); },
                            "/refinements"},
+        InvalidMetricsCase{"BalanceToleranceNegative",
+                           [](json& m) {
+                             m["solver"] = {{"balance_tolerance", -1e-7}};
+                           },
+                           "/solver/balance_tolerance"},
+        InvalidMetricsCase{"UnknownSolverKey",
+                           [](json& m) {
+                             m["solver"] = {{"energy_tolerance", 1e-7}};
+                           },
+                           "/solver/energy_tolerance"},
         InvalidMetricsCase{"UnknownKind", [](json& m) { m["metrics"][0]["kind"] = "energy"; },
                            "/metrics/0/kind"},
         InvalidMetricsCase{"UnknownMetricKey",

@@ -25,8 +25,9 @@
 //
 // Energy: stored = stored energy of the internal elements; dissipated = their dissipation
 // plus the energy the internal solver booked as released in jumps (pseudo-transient
-// continuation through a snap-through: that energy leaves the static system, like heat), so
-// that a global balance external work = stored + dissipated holds for the element.
+// continuation through a snap-through: that energy leaves the static system, like heat, by
+// the laws' measure), and the integration misfit their stress work adds, so that a global
+// balance external work = stored + dissipated + misfit holds for the element.
 //
 // Reused tangent (WorkSkips::reuse_tangents, DESIGN.md section 10): asked again at the outer
 // configuration of its last evaluation (bit for bit), while its committed history is the one

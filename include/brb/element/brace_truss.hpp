@@ -66,6 +66,12 @@ private:
   double strain_ = 0.0;
   double axial_force_ = 0.0;
   double deformation_ = 0.0;
+  double committed_force_ = 0.0;
+  double committed_work_ = 0.0;
+
+  /// The axial force's trapezoidal work on the core's elongation since the start (N mm; the
+  /// elastic end zones' share is their stored energy exactly, so it is not summed).
+  double core_stress_work() const;
 };
 
 } // namespace brb::element

@@ -119,6 +119,14 @@ private:
     std::array<material::MortarState, 4> faces{}; ///< +y, -y, +z, -z
     material::FrictionState friction;
     std::array<double, 4> bearing_strain{}; ///< for the free energy
+    // Where the trapezoidal stress work was last summed (energy().integration_misfit): the
+    // faces' signed penetrations (negative when open) and bearing forces, the relative
+    // displacement and the friction force, and the work so far (N mm).
+    std::array<double, 4> penetration{};
+    std::array<double, 4> face_force{};
+    Vector3 relative = Vector3::Zero();
+    double friction_force = 0.0;
+    double stress_work = 0.0;
   };
 
   /// The core's axial strain at the station from the chord of its neighbour nodes, with the
@@ -160,6 +168,9 @@ private:
   /// The local tangent (axis, y, z) when every face is open, and the force and tangent
   /// scattered onto the core and casing nodes (shared by both paths so that they round alike).
   Matrix3 open_local_tangent() const;
+  /// Records the trial kinematics and forces in trial_ and sums the step's stress work from
+  /// the committed ones (shared by both paths, so that an open link sums alike).
+  void record_stress_work();
   void scatter(const Vector3& local_force, const Matrix3& local_tangent, Eigen::VectorXd& force,
                Eigen::MatrixXd& tangent) const;
   /// Adds the expansion's forces on the chord's ends and its tangent terms, from the bearing

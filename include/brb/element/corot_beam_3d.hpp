@@ -136,6 +136,7 @@ public:
       const double length = integration_.weights[k] * length_;
       energy.stored += length * sections_[k].stored_energy();
       energy.dissipated += length * sections_[k].dissipated_energy();
+      energy.integration_misfit += length * sections_[k].integration_misfit();
     }
     energy.stored += 0.5 * torsional_stiffness() / length_ * twist_ * twist_;
     return energy;

@@ -60,14 +60,25 @@ public:
     return true;
   }
 
-  void commit() override { committed_ = trial_; }
-  void revert_to_committed() override { trial_ = committed_; }
+  void commit() override {
+    committed_work_ = stress_work();
+    committed_ = trial_;
+    committed_strain_ = strain_;
+    committed_force_ = axial_force_;
+  }
+  void revert_to_committed() override {
+    trial_ = committed_;
+    strain_ = committed_strain_;
+    axial_force_ = committed_force_;
+  }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
 
   ElementEnergy energy() const override {
     const double volume = area_ * initial_length_;
-    return {volume * law_.free_energy(trial_, strain_),
-            volume * UniaxialLaw::dissipated_energy(trial_)};
+    ElementEnergy energy{volume * law_.free_energy(trial_, strain_),
+                         volume * UniaxialLaw::dissipated_energy(trial_)};
+    energy.integration_misfit = stress_work() - energy.stored - energy.dissipated;
+    return energy;
   }
 
   double axial_force() const { return axial_force_; }
@@ -82,6 +93,15 @@ private:
   typename UniaxialLaw::State trial_;
   double strain_ = 0.0;
   double axial_force_ = 0.0;
+  double committed_strain_ = 0.0;
+  double committed_force_ = 0.0;
+  double committed_work_ = 0.0;
+
+  /// The axial force's trapezoidal work on the elongation since the start (N mm).
+  double stress_work() const {
+    return committed_work_ + 0.5 * (committed_force_ + axial_force_) *
+                                 (strain_ - committed_strain_) * initial_length_;
+  }
 };
 
 } // namespace brb::element

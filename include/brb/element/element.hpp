@@ -26,6 +26,14 @@ struct NodeConfiguration {
 struct ElementEnergy {
   double stored = 0.0;     ///< recoverable (free) energy
   double dissipated = 0.0; ///< plastic, damage and friction dissipation since the start
+  /// The trapezoidal work of the stresses (forces) on the strains (displacements) at the
+  /// integration points (contact faces, springs) since the start, minus stored and
+  /// dissipated: the laws' time discretisation seen by the energy balance. The external
+  /// work is summed with the trapezoidal rule; the laws book their exact energies of each
+  /// backward-Euler update, and the two differ by O(step^2) where the stress-strain path
+  /// has a kink inside a step (first yield, a contact closing). Elements whose laws are
+  /// linear, or that do not track it, report 0 (their misfit, if any, stays in the balance).
+  double integration_misfit = 0.0;
 };
 
 class Element {

@@ -47,6 +47,10 @@ public:
   double dissipated_energy() const {
     return first_.dissipated_energy() + second_.dissipated_energy();
   }
+  /// The parts' stress work minus their laws' energies (FiberSection::integration_misfit).
+  double integration_misfit() const {
+    return first_.integration_misfit() + second_.integration_misfit();
+  }
   /// Largest damage of either part (trial state).
   double max_damage() const { return std::max(first_.max_damage(), second_.max_damage()); }
 

@@ -37,7 +37,8 @@ public:
   FiberSection(FiberLayout layout, UniaxialLaw law, double shear_modulus)
       : layout_(std::move(layout)), law_(std::move(law)), shear_modulus_(shear_modulus),
         committed_(layout_.size(), law_.initial_state()), trial_(committed_),
-        stress_(layout_.size(), 0.0), strain_(layout_.size(), 0.0) {}
+        stress_(layout_.size(), 0.0), strain_(layout_.size(), 0.0), committed_stress_(stress_),
+        committed_strain_(strain_) {}
 
   /// Trial response at a section deformation; fiber trial states are kept until
   /// commit() or revert_to_committed().
@@ -61,8 +62,17 @@ public:
     return response_;
   }
 
-  void commit() { committed_ = trial_; }
-  void revert_to_committed() { trial_ = committed_; }
+  void commit() {
+    committed_work_ = stress_work();
+    committed_ = trial_;
+    committed_stress_ = stress_;
+    committed_strain_ = strain_;
+  }
+  void revert_to_committed() {
+    trial_ = committed_;
+    stress_ = committed_stress_;
+    strain_ = committed_strain_;
+  }
 
   double torsional_stiffness() const { return shear_modulus_ * layout_.torsion_constant; }
   const FiberLayout& layout() const { return layout_; }
@@ -94,6 +104,29 @@ public:
     return energy;
   }
 
+  /// Work of the fiber stresses on the fiber strains since the start per unit length
+  /// (N mm / mm), summed over committed steps with the trapezoidal rule,
+  /// sum_i A_i (sigma_c + sigma_t) (eps_t - eps_c) / 2: the rule by which the external work
+  /// is summed (StaticAnalysis), so that the two agree up to the kinematics and the
+  /// equilibrium tolerance, while stored + dissipated follow the law's own exact energy
+  /// bookkeeping of its backward-Euler update.
+  double stress_work() const {
+    double work = 0.0;
+    for (std::size_t i = 0; i < layout_.size(); ++i) {
+      work += layout_.area[i] * (committed_stress_[i] + stress_[i]) *
+              (strain_[i] - committed_strain_[i]);
+    }
+    return committed_work_ + 0.5 * work;
+  }
+
+  /// stress_work() - stored_energy() - dissipated_energy() (N mm / mm): the laws' time
+  /// discretisation as seen by the energy balance (a step with a kink of the stress-strain
+  /// path inside it, e.g. first yield, is not summed exactly by the trapezoidal rule, while
+  /// the law books its exact dissipation). Zero for a linear law.
+  double integration_misfit() const {
+    return stress_work() - stored_energy() - dissipated_energy();
+  }
+
   /// Largest fiber damage in the trial state.
   double max_damage() const {
     double worst = 0.0;
@@ -110,6 +143,9 @@ private:
   std::vector<FiberState> trial_;
   std::vector<double> stress_;
   std::vector<double> strain_;
+  std::vector<double> committed_stress_;
+  std::vector<double> committed_strain_;
+  double committed_work_ = 0.0; ///< stress_work() of the committed state
   Response response_;
 };
 

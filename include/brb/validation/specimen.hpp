@@ -95,6 +95,9 @@ struct Specimen {
   std::filesystem::path brace_file;    ///< resolved against the folder
   std::filesystem::path protocol_file; ///< resolved against the folder
   std::vector<int> refinements;        ///< multipliers of every zone's element count
+  /// The solver's balance control for this specimen's runs (NewtonSettings::
+  /// balance_tolerance; 0: off, the default), metrics.json's solver.balance_tolerance.
+  double balance_tolerance = 0.0;
   std::optional<RecordReference> record;
   /// For lab records: "calibration" (the specimen calibrated its grade's steel) or
   /// "prediction" (run with the steel calibrated on `calibrated_on`); empty otherwise.

@@ -85,6 +85,8 @@ struct RunOutcome {
   int iterations = 0;
   double run_seconds = 0.0; ///< wall-clock time of the analysis (not of writing)
   double energy_balance_error = 0.0;
+  /// EnergyBalance::relative_misfit: the laws' time discretisation, reported.
+  double integration_misfit = 0.0;
   double yield_deformation = 0.0;
   double yield_force = 0.0;
   std::vector<CheckResult> checks; ///< automatic checks first, then the metrics in file order
