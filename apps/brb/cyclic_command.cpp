@@ -221,7 +221,7 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           "Balance control: a step is cut while the energy balance's running error (external "
           "work - stored - dissipated - integration misfit - released, summary.json's "
           "relative_error) would exceed this fraction of the gross work; default 0 (off); "
-          "brb validate uses 5e-7")
+          "it can move a restrained core's path (README, \"Energy balance\")")
       ->type_name("FRACTION");
   cyclic->add_flag("--histories", command.histories,
                    "Also write element_history.csv: core strain, dissipated energy, cumulative "

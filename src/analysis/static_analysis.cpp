@@ -429,16 +429,20 @@ double StaticAnalysis::increment_work() const {
   return work;
 }
 
+bool StaticAnalysis::within_budget(double committed_error, double change, double tolerance,
+                                   const StepEnergy& step) const {
+  // Round-off floor: the energies are sums of many terms of their own size.
+  const double round_off =
+      1e-13 * (std::abs(step.end.stored) + std::abs(step.end.dissipated) + std::abs(step.work));
+  return std::abs(committed_error + step.work - change) <=
+         tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
+}
+
 bool StaticAnalysis::within_energy_tolerance(const StepEnergy& step) const {
   if (!(settings_.energy_tolerance > 0.0))
     return true;
   const double change = step.end.stored + step.end.dissipated - energy_.stored - energy_.dissipated;
-  const double step_error = step.work - change;
-  // Round-off floor: the energies are sums of many terms of their own size.
-  const double round_off =
-      1e-13 * (std::abs(step.end.stored) + std::abs(step.end.dissipated) + std::abs(step.work));
-  return std::abs(energy_error_sum_ + step_error) <=
-         settings_.energy_tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
+  return within_budget(energy_error_sum_, change, settings_.energy_tolerance, step);
 }
 
 bool StaticAnalysis::within_balance_tolerance(const StepEnergy& step) const {
@@ -446,14 +450,10 @@ bool StaticAnalysis::within_balance_tolerance(const StepEnergy& step) const {
     return true;
   const double change = step.end.stored + step.end.dissipated + step.end.integration_misfit -
                         energy_.stored - energy_.dissipated - energy_.integration_misfit;
-  const double step_error = step.work - change;
-  const double round_off =
-      1e-13 * (std::abs(step.end.stored) + std::abs(step.end.dissipated) + std::abs(step.work));
   // the committed balance's signed error (the sum of the committed steps' errors)
   const double committed_error = energy_.external_work - energy_.stored - energy_.dissipated -
                                  energy_.integration_misfit - energy_.released_in_jumps;
-  return std::abs(committed_error + step_error) <=
-         settings_.balance_tolerance * (energy_.gross_work + std::abs(step.work)) + round_off;
+  return within_budget(committed_error, change, settings_.balance_tolerance, step);
 }
 
 void StaticAnalysis::commit(double control, const StepEnergy& step) {

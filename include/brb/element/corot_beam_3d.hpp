@@ -134,9 +134,12 @@ public:
     ElementEnergy energy;
     for (std::size_t k = 0; k < sections_.size(); ++k) {
       const double length = integration_.weights[k] * length_;
-      energy.stored += length * sections_[k].stored_energy();
-      energy.dissipated += length * sections_[k].dissipated_energy();
-      energy.integration_misfit += length * sections_[k].integration_misfit();
+      const double stored = sections_[k].stored_energy();
+      const double dissipated = sections_[k].dissipated_energy();
+      energy.stored += length * stored;
+      energy.dissipated += length * dissipated;
+      // the laws' time discretisation (ElementEnergy::integration_misfit)
+      energy.integration_misfit += length * (sections_[k].stress_work() - stored - dissipated);
     }
     energy.stored += 0.5 * torsional_stiffness() / length_ * twist_ * twist_;
     return energy;

@@ -47,10 +47,8 @@ public:
   double dissipated_energy() const {
     return first_.dissipated_energy() + second_.dissipated_energy();
   }
-  /// The parts' stress work minus their laws' energies (FiberSection::integration_misfit).
-  double integration_misfit() const {
-    return first_.integration_misfit() + second_.integration_misfit();
-  }
+  /// The parts' trapezoidal stress work per unit length (FiberSection::stress_work).
+  double stress_work() const { return first_.stress_work() + second_.stress_work(); }
   /// Largest damage of either part (trial state).
   double max_damage() const { return std::max(first_.max_damage(), second_.max_damage()); }
 

@@ -35,7 +35,7 @@ public:
   double stored_energy() const { return 0.5 * response_.force.dot(deformation_); }
   double dissipated_energy() const { return 0.0; }
   /// A linear section: the trapezoidal stress work is its stored energy exactly.
-  double integration_misfit() const { return 0.0; }
+  double stress_work() const { return stored_energy(); }
   double max_damage() const { return 0.0; }
   const ElasticSectionProperties& properties() const { return properties_; }
 

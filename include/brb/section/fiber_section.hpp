@@ -119,14 +119,6 @@ public:
     return committed_work_ + 0.5 * work;
   }
 
-  /// stress_work() - stored_energy() - dissipated_energy() (N mm / mm): the laws' time
-  /// discretisation as seen by the energy balance (a step with a kink of the stress-strain
-  /// path inside it, e.g. first yield, is not summed exactly by the trapezoidal rule, while
-  /// the law books its exact dissipation). Zero for a linear law.
-  double integration_misfit() const {
-    return stress_work() - stored_energy() - dissipated_energy();
-  }
-
   /// Largest fiber damage in the trial state.
   double max_damage() const {
     double worst = 0.0;
