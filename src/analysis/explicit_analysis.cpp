@@ -388,7 +388,9 @@ void ExplicitAnalysis::build_masses_and_step() {
   energy_.kinetic = 0.5 * velocity_.dot(mass_.cwiseProduct(velocity_));
   energy_.stored = elements.stored;
   energy_.dissipated = elements.dissipated;
-  energy_.static_work = energy_.kinetic + energy_.stored + energy_.dissipated;
+  energy_.integration_misfit = elements.integration_misfit;
+  energy_.static_work =
+      energy_.kinetic + energy_.stored + energy_.dissipated + energy_.integration_misfit;
 }
 
 bool ExplicitAnalysis::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& half_step_velocity,
@@ -486,6 +488,7 @@ ExplicitStepReport ExplicitAnalysis::advance(double dt) {
   const element::ElementEnergy elements = assembler_.energy();
   energy_.stored = elements.stored;
   energy_.dissipated = elements.dissipated;
+  energy_.integration_misfit = elements.integration_misfit;
 
   for (const auto& element : model_.elements())
     element->commit();

@@ -41,10 +41,13 @@ Json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,
   summary["peak_base_shear"] = result.peak_base_shear;
   summary["energy_input"] = result.energy.input;
   summary["energy_balance_error"] = result.energy_balance_error;
-  summary["energy"] =
-      Json{{"input", result.energy.input},     {"static_work", result.energy.static_work},
-           {"kinetic", result.energy.kinetic}, {"damping", result.energy.damping},
-           {"stored", result.energy.stored},   {"dissipated", result.energy.dissipated}};
+  summary["energy"] = Json{{"input", result.energy.input},
+                           {"static_work", result.energy.static_work},
+                           {"kinetic", result.energy.kinetic},
+                           {"damping", result.energy.damping},
+                           {"stored", result.energy.stored},
+                           {"dissipated", result.energy.dissipated},
+                           {"integration_misfit", result.energy.integration_misfit}};
   Json fallbacks = Json::array();
   for (const analysis::FallbackRecord& fallback : result.fallbacks)
     fallbacks.push_back(

@@ -117,8 +117,9 @@ public:
         shear.columns.push_back("base_shear_y");
     }
     if (asked.energy) {
-      result_.histories["energy"].columns = {"time",    "input",  "static_work", "kinetic",
-                                             "damping", "stored", "dissipated",  "error"};
+      result_.histories["energy"].columns = {
+          "time",   "input",      "static_work",        "kinetic", "damping",
+          "stored", "dissipated", "integration_misfit", "error"};
     }
     for (const int id : computed_.braces) {
       const auto found = std::find_if(frame.braces.begin(), frame.braces.end(),
@@ -191,9 +192,9 @@ public:
 
     const analysis::TransientEnergy& energy = solver.energy();
     if (computed_.energy) {
-      result_.histories["energy"].rows.push_back({time, energy.input, energy.static_work,
-                                                  energy.kinetic, energy.damping, energy.stored,
-                                                  energy.dissipated, energy.absolute_error()});
+      result_.histories["energy"].rows.push_back(
+          {time, energy.input, energy.static_work, energy.kinetic, energy.damping, energy.stored,
+           energy.dissipated, energy.integration_misfit, energy.absolute_error()});
     }
 
     for (std::size_t b = 0; b < frame_.braces.size(); ++b)

@@ -73,6 +73,7 @@ element::ElementEnergy Assembler::energy() const {
     const element::ElementEnergy energy = elements[e]->energy();
     total.stored += energy.stored;
     total.dissipated += energy.dissipated;
+    total.integration_misfit += energy.integration_misfit;
   }
   return total;
 }

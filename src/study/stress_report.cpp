@@ -121,11 +121,13 @@ std::string stress_report_markdown(const std::vector<StressCase>& cases,
      << milliseconds(summary.step_times.median) << " ms, p90 "
      << milliseconds(summary.step_times.p90) << " ms, max " << milliseconds(summary.step_times.max)
      << " ms |\n\n"
-     << "Energy-balance error: brace cases |W - stored - dissipated - released in jumps| / "
-        "gross work (W the net external work, the gross work the sum of |work| over the "
-        "substeps; the net work is in the notes); frame cases |input + static work - kinetic "
-        "- damping - stored - "
-        "dissipated| / input (the ground motion's work). Fallbacks: substeps (brace: "
+     << "Energy-balance error: brace cases |W - stored - dissipated - integration misfit - "
+        "released in jumps| / gross work (W the net external work, the gross work the sum of "
+        "|work| over the substeps; the net work, the imbalance and the misfit are in the "
+        "notes); frame cases |input + static work - kinetic - damping - stored - dissipated - "
+        "integration misfit| / input (the ground motion's work; the misfit in the notes). The "
+        "integration misfit is the laws' time discretisation at the integration points, set "
+        "apart (README, \"Energy balance\"). Fallbacks: substeps (brace: "
         "converged substeps beyond one per step; frame: steps retried in halves), "
         "pseudo-transient passes of limit points, substeps accepted with an unstable tangent, "
         "energy-guard cuts, modified Newton and Broyden switches (frames).\n";

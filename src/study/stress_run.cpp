@@ -94,11 +94,12 @@ void run_brace(const BraceStress& stress, StressResult& result) {
   result.nan_count = nan.count();
 
   // Over the gross work (the sum of |work| per substep, the README's relative_error): the
-  // net work of nearly elastic cycles is close to zero, so a misfit over it measures nothing.
-  const double misfit = energy.external_work - energy.stored - energy.dissipated -
-                        energy.integration_misfit - energy.released_in_jumps;
+  // net work of nearly elastic cycles is close to zero, so an imbalance over it measures
+  // nothing.
+  const double imbalance = energy.external_work - energy.stored - energy.dissipated -
+                           energy.integration_misfit - energy.released_in_jumps;
   result.input_work = energy.gross_work;
-  result.energy_error = relative_to(misfit, energy.gross_work);
+  result.energy_error = relative_to(imbalance, energy.gross_work);
   result.fallbacks.substeps = std::max(0, run.substeps - result.steps);
   result.fallbacks.pseudo_transient = run.regularised_steps;
   result.fallbacks.unstable_accepted = run.unstable_accepted;
@@ -113,9 +114,10 @@ void run_brace(const BraceStress& stress, StressResult& result) {
   }
   std::ostringstream notes;
   notes.precision(4);
-  notes << "net work " << energy.external_work << " N mm, misfit " << misfit
-        << " N mm; peak deformation " << deformation_reached << " mm, forces "
-        << run.max_compression << " / " << run.max_tension << " N, lateral " << lateral << " mm";
+  notes << "net work " << energy.external_work << " N mm, imbalance " << imbalance
+        << " N mm, integration misfit " << energy.integration_misfit << " N mm; peak deformation "
+        << deformation_reached << " mm, forces " << run.max_compression << " / " << run.max_tension
+        << " N, lateral " << lateral << " mm";
   if (run.indicators.max_mortar_damage > 0.0)
     notes << ", mortar damage " << run.indicators.max_mortar_damage;
   result.notes = notes.str();
@@ -164,9 +166,9 @@ void run_frame(const FrameStress& stress, StressResult& result) {
   nan.all(run.peak_floor_acceleration);
   nan(run.peak_base_shear);
   const analysis::TransientEnergy& energy = run.energy;
-  nan.all(std::initializer_list<double>{energy.input, energy.static_work, energy.kinetic,
-                                        energy.damping, energy.stored, energy.dissipated,
-                                        energy.gross_input, run.energy_balance_error});
+  nan.all(std::initializer_list<double>{
+      energy.input, energy.static_work, energy.kinetic, energy.damping, energy.stored,
+      energy.dissipated, energy.integration_misfit, energy.gross_input, run.energy_balance_error});
   for (const frame::BraceSummary& brace : run.braces) {
     nan.all(std::initializer_list<double>{brace.max_tension, brace.max_compression,
                                           brace.max_core_strain,
@@ -195,7 +197,8 @@ void run_frame(const FrameStress& stress, StressResult& result) {
   std::ostringstream notes;
   notes.precision(4);
   notes << "peak drift " << 100.0 * peak_drift << " %, core strain " << 100.0 * core_strain
-        << " %, t = " << run.end_time << " of " << run.duration << " s";
+        << " %, t = " << run.end_time << " of " << run.duration << " s; integration misfit "
+        << energy.integration_misfit << " N mm";
   result.notes = notes.str();
   if (run.collapsed)
     result.outcome = run.stop_reason;

@@ -166,10 +166,20 @@ TEST(FrameCli, Brbf3ShortRunWritesTheSummaryAndTheRecordedHistories) {
   }
 
   const Table energy = read_table(output / "energy.csv");
-  EXPECT_EQ(energy.columns, (std::vector<std::string>{"time", "input", "static_work", "kinetic",
-                                                      "damping", "stored", "dissipated", "error"}));
+  EXPECT_EQ(energy.columns,
+            (std::vector<std::string>{"time", "input", "static_work", "kinetic", "damping",
+                                      "stored", "dissipated", "integration_misfit", "error"}));
   ASSERT_EQ(energy.rows.size(), recorded);
   const auto& last_energy = energy.rows.back();
+  // error = input + static work - kinetic - damping - stored - dissipated - misfit (README
+  // "brb frame", energy.csv), summed here from the written columns
+  const auto value = [&](const std::string& name) { return last_energy.at(energy.column(name)); };
+  EXPECT_NEAR(value("error"),
+              value("input") + value("static_work") - value("kinetic") - value("damping") -
+                  value("stored") - value("dissipated") - value("integration_misfit"),
+              1e-9 * std::abs(value("input")));
+  EXPECT_DOUBLE_EQ(value("integration_misfit"),
+                   summary.at("energy").at("integration_misfit").get<double>());
   EXPECT_DOUBLE_EQ(last_energy.at(energy.column("input")), energy_input);
   // energy_balance_error = |error| / input at the end (README "brb frame")
   EXPECT_NEAR(std::abs(last_energy.at(energy.column("error"))) / energy_input,

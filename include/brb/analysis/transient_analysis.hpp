@@ -101,13 +101,17 @@ struct TransientEnergy {
   double damping = 0.0;
   double stored = 0.0;
   double dissipated = 0.0;
+  /// The elements' integration misfit (ElementEnergy::integration_misfit: the trapezoidal work
+  /// of their laws' stresses at the integration points less the laws' own stored and
+  /// dissipated energy, the laws' time discretisation), set apart from the error.
+  double integration_misfit = 0.0;
   /// Gross input: the sum over (sub)steps of |input step| + |static work step| (N mm), a
   /// monotone scale for the balance (the net input oscillates and can pass through zero).
   double gross_input = 0.0;
-  /// E_I + W_static - kinetic - damping - stored - dissipated (N mm; see the .cpp for what
-  /// it measures).
+  /// E_I + W_static - kinetic - damping - stored - dissipated - integration_misfit (N mm; see
+  /// the .cpp for what it measures).
   double absolute_error() const {
-    return input + static_work - kinetic - damping - stored - dissipated;
+    return input + static_work - kinetic - damping - stored - dissipated - integration_misfit;
   }
   /// |absolute_error()| / gross_input (0 before any input).
   double relative_error() const {
