@@ -52,10 +52,10 @@ std::string milliseconds(double seconds) {
 
 std::string fallback_text(const FallbackCounts& fallbacks) {
   std::ostringstream text;
-  text << fallbacks.substeps << " substeps, " << fallbacks.pseudo_transient << " pseudo-transient, "
-       << fallbacks.unstable_accepted << " unstable accepted, " << fallbacks.energy_cuts
-       << " energy cuts, " << fallbacks.modified_newton << " modified Newton, " << fallbacks.broyden
-       << " Broyden";
+  text << fallbacks.substeps << " substeps, " << fallbacks.far_branch_cuts << " far-branch cuts, "
+       << fallbacks.pseudo_transient << " pseudo-transient, " << fallbacks.unstable_accepted
+       << " unstable accepted, " << fallbacks.energy_cuts << " energy cuts, "
+       << fallbacks.modified_newton << " modified Newton, " << fallbacks.broyden << " Broyden";
   return text.str();
 }
 
@@ -72,7 +72,8 @@ std::string stress_cases_csv(const std::vector<StressCase>& cases,
   std::ostringstream csv;
   csv << std::setprecision(17);
   csv << "name,group,completed,collapsed,nan_count,energy_error,input_work,steps,planned_steps,"
-         "fallbacks_substeps,fallbacks_pseudo_transient,fallbacks_unstable_accepted,"
+         "fallbacks_substeps,fallbacks_far_branch_cuts,fallbacks_pseudo_transient,"
+         "fallbacks_unstable_accepted,"
          "fallbacks_energy_cuts,fallbacks_modified_newton,fallbacks_broyden,step_time_median,"
          "step_time_p90,step_time_max,failed_step_time,wall_time,acceptable,outcome\n";
   for (const StressResult& result : results) {
@@ -81,11 +82,11 @@ std::string stress_cases_csv(const std::vector<StressCase>& cases,
     csv << result.name << ',' << group_name(result.group) << ',' << int(result.completed) << ','
         << int(result.collapsed) << ',' << result.nan_count << ',' << result.energy_error << ','
         << result.input_work << ',' << result.steps << ',' << result.planned_steps << ','
-        << f.substeps << ',' << f.pseudo_transient << ',' << f.unstable_accepted << ','
-        << f.energy_cuts << ',' << f.modified_newton << ',' << f.broyden << ',' << times.median
-        << ',' << times.p90 << ',' << times.max << ',' << result.failed_step_wall_time << ','
-        << result.wall_time << ',' << int(result.acceptable()) << ',' << csv_quoted(result.outcome)
-        << '\n';
+        << f.substeps << ',' << f.far_branch_cuts << ',' << f.pseudo_transient << ','
+        << f.unstable_accepted << ',' << f.energy_cuts << ',' << f.modified_newton << ','
+        << f.broyden << ',' << times.median << ',' << times.p90 << ',' << times.max << ','
+        << result.failed_step_wall_time << ',' << result.wall_time << ','
+        << int(result.acceptable()) << ',' << csv_quoted(result.outcome) << '\n';
   }
   return csv.str();
 }
@@ -128,7 +129,9 @@ std::string stress_report_markdown(const std::vector<StressCase>& cases,
         "integration misfit| / input (the ground motion's work; the misfit in the notes). The "
         "integration misfit is the laws' time discretisation at the integration points, set "
         "apart (README, \"Energy balance\"). Fallbacks: substeps (brace: "
-        "converged substeps beyond one per step; frame: steps retried in halves), "
+        "converged substeps beyond one per step; frame: steps retried in halves), far-branch "
+        "cuts (brace: a converged substep whose Newton correction went far beyond the tangent's "
+        "prediction, or that dissipated more than its work supplied, cut in half), "
         "pseudo-transient passes of limit points, substeps accepted with an unstable tangent, "
         "energy-guard cuts, modified Newton and Broyden switches (frames).\n";
 
@@ -140,7 +143,7 @@ std::string stress_report_markdown(const std::vector<StressCase>& cases,
       if (!any) {
         md << "\n## " << group_name(group) << "\n\n"
            << "| case | generator | settings | outcome | steps | NaN | energy error | "
-              "fallbacks (sub / pt / unst / cuts / mN / Br) | step ms (median / p90 / max) | "
+              "fallbacks (sub / far / pt / unst / cuts / mN / Br) | step ms (median / p90 / max) | "
               "wall s | notes | ok |\n"
            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         any = true;
@@ -151,10 +154,10 @@ std::string stress_report_markdown(const std::vector<StressCase>& cases,
       md << "| " << cell(result.name) << " | " << cell(cases[k].generator) << " | "
          << cell(cases[k].settings) << " | " << cell(result.outcome) << " | " << result.steps
          << " / " << result.planned_steps << " | " << result.nan_count << " | "
-         << general(result.energy_error) << " | " << f.substeps << " / " << f.pseudo_transient
-         << " / " << f.unstable_accepted << " / " << f.energy_cuts << " / " << f.modified_newton
-         << " / " << f.broyden << " | " << milliseconds(times.median) << " / "
-         << milliseconds(times.p90) << " / " << milliseconds(times.max) << " | "
+         << general(result.energy_error) << " | " << f.substeps << " / " << f.far_branch_cuts
+         << " / " << f.pseudo_transient << " / " << f.unstable_accepted << " / " << f.energy_cuts
+         << " / " << f.modified_newton << " / " << f.broyden << " | " << milliseconds(times.median)
+         << " / " << milliseconds(times.p90) << " / " << milliseconds(times.max) << " | "
          << fixed(result.wall_time, 2) << " | " << cell(result.notes)
          << (result.failed_step_wall_time > 0.0
                  ? "; failed step " + fixed(result.failed_step_wall_time, 1) + " s"

@@ -104,6 +104,7 @@ void run_brace(const BraceStress& stress, StressResult& result) {
   result.fallbacks.pseudo_transient = run.regularised_steps;
   result.fallbacks.unstable_accepted = run.unstable_accepted;
   result.fallbacks.energy_cuts = run.energy_cuts;
+  result.fallbacks.far_branch_cuts = run.far_branch_cuts;
 
   double deformation_reached = 0.0;
   double lateral = 0.0;

@@ -257,6 +257,7 @@ StressSummary summarise(const std::vector<StressResult>& results) {
     summary.fallbacks.pseudo_transient += result.fallbacks.pseudo_transient;
     summary.fallbacks.unstable_accepted += result.fallbacks.unstable_accepted;
     summary.fallbacks.energy_cuts += result.fallbacks.energy_cuts;
+    summary.fallbacks.far_branch_cuts += result.fallbacks.far_branch_cuts;
     summary.fallbacks.modified_newton += result.fallbacks.modified_newton;
     summary.fallbacks.broyden += result.fallbacks.broyden;
     summary.steps += result.steps;

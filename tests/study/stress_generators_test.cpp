@@ -159,5 +159,34 @@ TEST(StressRun, ANonFiniteTargetIsAReportedFailureNotASilentNaN) {
   EXPECT_EQ(result.nan_count, 0) << result.outcome;
 }
 
+TEST(StressRun, TheTrussSubstepsAreFarBranchCutsWhereItReyieldsInReverse) {
+  // The truss's only substeps in the stress suite (README, "Numerical stress suite"): the
+  // far-branch control's dissipation test fires where the core re-yields in reverse, since
+  // the law's kinematic hardening then releases its stored back-stress energy into
+  // dissipation. Cycles of +-10 dy: none in the first excursion (no back stress yet), some
+  // at the reversals, and every substep is such a cut (no energy cut, no Newton failure).
+  // (Checked once by switching the dissipation test off: no far-branch cut was left.)
+  StressCase stress_case;
+  stress_case.name = "truss-cycles";
+  BraceStress stress;
+  stress.brace = brace_variant(reference_brace(), model::Fidelity::truss, 16);
+  const double dy = brace_yield(stress.brace).deformation;
+  stress.deformation = history_points({10.0 * dy}, 0.1 * dy);
+  stress_case.subject = stress;
+  const StressResult monotonic = run_stress_case(stress_case);
+  ASSERT_TRUE(monotonic.completed) << monotonic.outcome;
+  EXPECT_EQ(monotonic.fallbacks.substeps, 0);
+  EXPECT_EQ(monotonic.fallbacks.far_branch_cuts, 0);
+
+  stress.deformation = history_points({10.0 * dy, -10.0 * dy, 10.0 * dy, -10.0 * dy}, 0.1 * dy);
+  stress_case.subject = stress;
+  const StressResult cycles = run_stress_case(stress_case);
+  ASSERT_TRUE(cycles.completed) << cycles.outcome;
+  EXPECT_GT(cycles.fallbacks.far_branch_cuts, 0);
+  EXPECT_EQ(cycles.fallbacks.substeps, cycles.fallbacks.far_branch_cuts);
+  EXPECT_EQ(cycles.fallbacks.energy_cuts, 0);
+  EXPECT_EQ(cycles.fallbacks.pseudo_transient, 0);
+}
+
 } // namespace
 } // namespace brb::study

@@ -24,7 +24,7 @@ struct StressReportContext {
 };
 
 /// The CSV columns: name,group,completed,collapsed,nan_count,energy_error,input_work,
-/// steps,planned_steps,fallbacks_substeps,fallbacks_pseudo_transient,
+/// steps,planned_steps,fallbacks_substeps,fallbacks_far_branch_cuts,fallbacks_pseudo_transient,
 /// fallbacks_unstable_accepted,fallbacks_energy_cuts,fallbacks_modified_newton,
 /// fallbacks_broyden,step_time_median,step_time_p90,step_time_max,failed_step_time,wall_time,
 /// acceptable,

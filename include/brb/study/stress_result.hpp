@@ -19,14 +19,17 @@ struct FallbackCounts {
   /// Brace (StaticAnalysis): converged substeps beyond one per step (the step was cut).
   /// Frame (TransientAnalysis): steps that were retried in halved substeps.
   int substeps = 0;
+  /// brace: substeps cut by the far-branch control (NewtonSettings::max_correction_ratio and
+  /// the dissipation-supplied-by-work test: Newton landed away from the tangent's prediction)
+  int far_branch_cuts = 0;
   int pseudo_transient = 0;  ///< brace: substeps passed by pseudo-transient continuation
   int unstable_accepted = 0; ///< brace: substeps accepted with an unstable tangent
   int energy_cuts = 0;       ///< brace: substeps cut by the energy-error guard
   int modified_newton = 0;   ///< frame: steps that switched to modified Newton
   int broyden = 0;           ///< frame: steps that switched to Broyden's update
   int total() const {
-    return substeps + pseudo_transient + unstable_accepted + energy_cuts + modified_newton +
-           broyden;
+    return substeps + far_branch_cuts + pseudo_transient + unstable_accepted + energy_cuts +
+           modified_newton + broyden;
   }
 };
 
