@@ -84,7 +84,7 @@ CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_posit
   }
   Eigen::VectorXd unused_force;
   scatter(Vector3::Zero(), open_local_tangent(), unused_force, open_tangent_);
-  // the faces' penetrations in the initial configuration (relative_ = 0, no expansion)
+  // the faces' penetrations in the initial configuration (no relative displacement, no expansion)
   for (int face = 0; face < 4; ++face)
     committed_.penetration[face] = penetration(face);
   trial_ = committed_;
@@ -103,7 +103,7 @@ CasingContact::Chord CasingContact::chord(std::span<const NodeConfiguration> con
 double CasingContact::penetration(int face) const {
   const int direction = 1 + face / 2;
   const double gap = direction == 1 ? parameters_.gap_y : parameters_.gap_z;
-  const double motion = face % 2 == 0 ? relative_[direction] : -relative_[direction];
+  const double motion = face % 2 == 0 ? trial_.relative[direction] : -trial_.relative[direction];
   return motion - gap + expansion_[direction - 1];
 }
 
@@ -136,28 +136,29 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
                              Eigen::VectorXd& force, Eigen::MatrixXd& tangent,
                              std::string& failure) {
   const Matrix3& axes = parameters_.axes;
-  relative_ =
+  trial_ = committed_;
+  trial_.bearing_strain.fill(0.0);
+  trial_.face_force.fill(0.0);
+  trial_.relative =
       axes.transpose() * (configuration[0].position - configuration[1].position - initial_offset_);
+  const Vector3& relative = trial_.relative;
   Chord core_chord;
   if (has_expansion()) {
     core_chord = chord(configuration);
     expansion_ = expansion_per_strain_ * core_chord.strain;
   }
-  trial_ = committed_;
-  trial_.bearing_strain.fill(0.0);
-  face_forces_.fill(0.0);
 
   if (skip_open_links_ && !(penetration(0) > 0.0) && !(penetration(1) > 0.0) &&
       !(penetration(2) > 0.0) && !(penetration(3) > 0.0)) {
     // Open link: the layer springs only. The state changes as the general path changes it:
     // faces as committed, the friction slip follows the axial motion (F6).
     ++open_evaluations_;
-    trial_.friction.slip = Eigen::Vector2d(relative_[0], 0.0);
+    trial_.friction.slip = Eigen::Vector2d(relative[0], 0.0);
     Vector3 local_force = Vector3::Zero();
-    local_force[1] += parameters_.layer_stiffness * relative_[1];
-    local_force[2] += parameters_.layer_stiffness * relative_[2];
+    local_force[1] += parameters_.layer_stiffness * relative[1];
+    local_force[2] += parameters_.layer_stiffness * relative[2];
     in_contact_ = false;
-    link_force_ = local_force;
+    trial_.link_force = local_force;
     force = Eigen::VectorXd::Zero(open_tangent_.rows());
     const Vector3 global_force = parameters_.axes * local_force;
     force.segment<3>(0) = global_force;
@@ -205,23 +206,23 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
       normal_rate[direction] += sign * stiffness;
       direction_force[direction - 1] += bearing_force;
       direction_stiffness[direction - 1] += stiffness;
-      face_forces_[face] = bearing_force;
+      trial_.face_force[face] = bearing_force;
       in_contact_ = in_contact_ || bearing_force > 0.0;
     }
     // unbonding layer: always active
-    local_force[direction] += parameters_.layer_stiffness * relative_[direction];
+    local_force[direction] += parameters_.layer_stiffness * relative[direction];
     local_tangent(direction, direction) += parameters_.layer_stiffness;
   }
 
   // Coulomb friction along the axis with the total bearing force as normal force. Called
   // with dN/dg = 1 so that the tangent's first column is dT/dN.
   const auto friction = friction_.evaluate_with_normal(committed_.friction, normal_force, 1.0,
-                                                       Eigen::Vector2d(relative_[0], 0.0));
+                                                       Eigen::Vector2d(relative[0], 0.0));
   trial_.friction = friction.state;
   local_force[0] = friction.tangential_force[0];
   local_tangent(0, 0) = friction.tangent(1, 1);
   local_tangent.row(0) += friction.tangent(1, 0) * normal_rate;
-  link_force_ = local_force;
+  trial_.link_force = local_force;
   record_stress_work();
   scatter(local_force, local_tangent, force, tangent);
   if (has_expansion() && penetrated)
@@ -284,16 +285,15 @@ void CasingContact::record_stress_work() {
   double work = 0.0;
   for (int face = 0; face < 4; ++face) {
     trial_.penetration[face] = penetration(face);
-    trial_.face_force[face] = face_forces_[face];
-    work += (committed_.face_force[face] + face_forces_[face]) *
+    work += (committed_.face_force[face] + trial_.face_force[face]) *
             (trial_.penetration[face] - committed_.penetration[face]);
   }
-  trial_.relative = relative_;
-  trial_.friction_force = link_force_[0];
-  work += (committed_.friction_force + link_force_[0]) * (relative_[0] - committed_.relative[0]);
+  const Vector3& relative = trial_.relative;
+  const Vector3& start = committed_.relative;
+  work += (committed_.link_force[0] + trial_.link_force[0]) * (relative[0] - start[0]);
   for (int direction = 1; direction <= 2; ++direction) {
-    work += parameters_.layer_stiffness * (committed_.relative[direction] + relative_[direction]) *
-            (relative_[direction] - committed_.relative[direction]);
+    work += parameters_.layer_stiffness * (start[direction] + relative[direction]) *
+            (relative[direction] - start[direction]);
   }
   trial_.stress_work = committed_.stress_work + 0.5 * work;
 }
@@ -301,7 +301,8 @@ void CasingContact::record_stress_work() {
 ElementEnergy CasingContact::energy() const {
   ElementEnergy energy;
   const double layer = parameters_.layer_stiffness;
-  energy.stored = 0.5 * layer * (relative_[1] * relative_[1] + relative_[2] * relative_[2]);
+  const Vector3& relative = trial_.relative;
+  energy.stored = 0.5 * layer * (relative[1] * relative[1] + relative[2] * relative[2]);
   for (int face = 0; face < 4; ++face) {
     const int direction = face < 2 ? 0 : 1;
     const double area = direction == 0 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
@@ -312,7 +313,7 @@ ElementEnergy CasingContact::energy() const {
     energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.faces[face]);
   }
   // friction: the stick spring's energy is stored, the slip work dissipated
-  const double stick = relative_[0] - trial_.friction.slip[0];
+  const double stick = relative[0] - trial_.friction.slip[0];
   energy.stored += 0.5 * parameters_.tangential_stiffness * stick * stick;
   energy.dissipated += trial_.friction.dissipated_energy;
   energy.integration_misfit = trial_.stress_work - energy.stored - energy.dissipated;

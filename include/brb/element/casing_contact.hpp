@@ -97,13 +97,15 @@ public:
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   ElementEnergy energy() const override;
 
-  /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N).
-  const Vector3& link_force() const { return link_force_; }
+  /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N;
+  /// trial state).
+  const Vector3& link_force() const { return trial_.link_force; }
   /// Bearing force of each face, +y, -y, +z, -z (N, >= 0; trial state).
-  const std::array<double, 4>& face_forces() const { return face_forces_; }
+  const std::array<double, 4>& face_forces() const { return trial_.face_force; }
   /// Friction's normal force: the sum of the four faces' bearing forces (N; trial state).
   double normal_force() const {
-    return face_forces_[0] + face_forces_[1] + face_forces_[2] + face_forces_[3];
+    const std::array<double, 4>& faces = trial_.face_force;
+    return faces[0] + faces[1] + faces[2] + faces[3];
   }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
@@ -119,13 +121,15 @@ private:
     std::array<material::MortarState, 4> faces{}; ///< +y, -y, +z, -z
     material::FrictionState friction;
     std::array<double, 4> bearing_strain{}; ///< for the free energy
-    // Where the trapezoidal stress work was last summed (energy().integration_misfit): the
-    // faces' signed penetrations (negative when open) and bearing forces, the relative
-    // displacement and the friction force, and the work so far (N mm).
-    std::array<double, 4> penetration{};
-    std::array<double, 4> face_force{};
+    /// Local relative displacement of the core from the casing (axis, y, z; mm).
     Vector3 relative = Vector3::Zero();
-    double friction_force = 0.0;
+    /// Resisting force on the core (friction along the axis, bearing + layer along y, z; N).
+    Vector3 link_force = Vector3::Zero();
+    std::array<double, 4> face_force{}; ///< bearing force of each face (N, >= 0)
+    // The trapezoidal stress work (energy().integration_misfit): the faces' signed
+    // penetrations (negative when open), with face_force, relative and link_force the
+    // kinematics and forces it is summed on, and the work so far (N mm).
+    std::array<double, 4> penetration{};
     double stress_work = 0.0;
   };
 
@@ -151,9 +155,6 @@ private:
   material::PenaltyFriction friction_;
   State committed_;
   State trial_;
-  Vector3 relative_ = Vector3::Zero(); ///< local relative displacement (axis, y, z)
-  Vector3 link_force_ = Vector3::Zero();
-  std::array<double, 4> face_forces_{};
   Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;
@@ -162,14 +163,15 @@ private:
 
   bool has_expansion() const { return chord_ends_[0] >= 0; }
   Chord chord(std::span<const NodeConfiguration> configuration) const;
-  /// Penetration of a face (0: +y, 1: -y, 2: +z, 3: -z) at relative_ and expansion_ (shared
+  /// Penetration of a face (0: +y, 1: -y, 2: +z, 3: -z) at the trial relative displacement and
+  /// expansion_ (shared
   /// by the open test and the general path so that they decide alike).
   double penetration(int face) const;
   /// The local tangent (axis, y, z) when every face is open, and the force and tangent
   /// scattered onto the core and casing nodes (shared by both paths so that they round alike).
   Matrix3 open_local_tangent() const;
-  /// Records the trial kinematics and forces in trial_ and sums the step's stress work from
-  /// the committed ones (shared by both paths, so that an open link sums alike).
+  /// Records the trial faces' penetrations and sums the step's stress work from the committed
+  /// state (shared by both paths, so that an open link sums alike).
   void record_stress_work();
   void scatter(const Vector3& local_force, const Matrix3& local_tangent, Eigen::VectorXd& force,
                Eigen::MatrixXd& tangent) const;
