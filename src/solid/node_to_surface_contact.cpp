@@ -17,7 +17,7 @@
 //        f_a += -k_T (d . n) [sum_alpha N_a,alpha c_alpha - N_a sum_alpha w_alpha t_alpha
 //                             + g (sum_alpha w_alpha N_a,alpha) n]
 #include "brb/solid/node_to_surface_contact.hpp"
-#include "brb/solid/parallel_blocks.hpp"
+#include "brb/solid/thread_team.hpp"
 
 #include "brb/material/parameter_error.hpp"
 
@@ -493,7 +493,7 @@ void NodeToSurfaceContact::set_threads(int threads) {
   if (threads < 1)
     throw std::invalid_argument("node-to-surface contact: threads must be >= 1 (got " +
                                 std::to_string(threads) + ")");
-  threads_ = threads;
+  team_ = ThreadTeam(threads);
 }
 
 bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,
@@ -523,7 +523,7 @@ bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen:
       for (std::size_t i = begin; i < end; ++i)
         contact_of_node(pass, i, configuration);
     };
-    parallel_blocks(n, threads_, block);
+    team_.run(n, block);
     // in node order: the first failure, the forces and the counts (the same for any threads)
     for (std::size_t i = 0; i < n; ++i) {
       const NodeRecord& record = pass.records[i];

@@ -1,5 +1,5 @@
 #include "brb/solid/solid_model.hpp"
-#include "brb/solid/parallel_blocks.hpp"
+#include "brb/solid/thread_team.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
 #include "brb/material/mortar_damage.hpp"
@@ -82,7 +82,7 @@ template <class Law> void SolidModel<Law>::set_threads(int threads) {
   if (threads < 1)
     throw std::invalid_argument("solid model: threads must be >= 1 (got " +
                                 std::to_string(threads) + ")");
-  threads_ = threads;
+  team_ = ThreadTeam(threads);
 }
 
 template <class Law>
@@ -137,7 +137,7 @@ bool SolidModel<Law>::evaluate(const Eigen::VectorXd& displacement, Eigen::Vecto
     for (std::size_t e = begin; e < end; ++e)
       element_failed_[e] = evaluate_element(e, u, with_tangent) ? 0 : 1;
   };
-  parallel_blocks(n, threads_, block);
+  team_.run(n, block);
 
   // the first failed element, in element order (the same for every thread count)
   for (std::size_t e = 0; e < n; ++e) {

@@ -82,6 +82,7 @@
 #include "brb/solid/bilinear_quad.hpp"
 #include "brb/solid/face_buckets.hpp"
 #include "brb/solid/solid_interaction.hpp"
+#include "brb/solid/thread_team.hpp"
 
 #include <Eigen/Core>
 
@@ -180,7 +181,7 @@ public:
 
   /// Threads of the slave-node loop (>= 1; default 1). Throws std::invalid_argument below 1.
   void set_threads(int threads);
-  int threads() const { return threads_; }
+  int threads() const { return team_.threads(); }
 
   const NodeToSurfaceContactSettings& settings() const { return settings_; }
   const ContactStatistics& statistics() const { return statistics_; }
@@ -268,7 +269,7 @@ private:
 
   Eigen::Matrix3Xd reference_;
   NodeToSurfaceContactSettings settings_;
-  int threads_ = 1;
+  ThreadTeam team_;
   std::vector<Pass> passes_;
   ContactStatistics statistics_;
 };

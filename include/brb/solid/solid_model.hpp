@@ -17,6 +17,7 @@
 
 #include "brb/solid/hex8.hpp"
 #include "brb/solid/hex_mesh.hpp"
+#include "brb/solid/thread_team.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -67,7 +68,7 @@ public:
 
   /// Threads of the element loop (>= 1; default 1). Throws std::invalid_argument below 1.
   void set_threads(int threads);
-  int threads() const { return threads_; }
+  int threads() const { return team_.threads(); }
 
   /// Second Piola-Kirchhoff stress and Green-Lagrange strain (Voigt) of each element, as of
   /// the last evaluate().
@@ -96,7 +97,7 @@ private:
   bool evaluate_element(std::size_t e, const Eigen::Matrix3Xd& displacement, bool with_tangent);
 
   HexMesh mesh_;
-  int threads_ = 1;
+  ThreadTeam team_;
   double density_ = 0.0;
   std::vector<Law> laws_;
   std::vector<Hex8Reference> references_;
