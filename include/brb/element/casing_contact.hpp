@@ -164,8 +164,7 @@ private:
   bool has_expansion() const { return chord_ends_[0] >= 0; }
   Chord chord(std::span<const NodeConfiguration> configuration) const;
   /// Penetration of a face (0: +y, 1: -y, 2: +z, 3: -z) at the trial relative displacement and
-  /// expansion_ (shared
-  /// by the open test and the general path so that they decide alike).
+  /// expansion_ (shared by the open test and the general path so that they decide alike).
   double penetration(int face) const;
   /// The local tangent (axis, y, z) when every face is open, and the force and tangent
   /// scattered onto the core and casing nodes (shared by both paths so that they round alike).

@@ -20,7 +20,8 @@ struct FallbackCounts {
   /// Frame (TransientAnalysis): steps that were retried in halved substeps.
   int substeps = 0;
   /// brace: substeps cut by the far-branch control (NewtonSettings::max_correction_ratio and
-  /// the dissipation-supplied-by-work test: Newton landed away from the tangent's prediction)
+  /// the dissipation-supplied-by-work test: Newton landed away from the tangent's prediction).
+  /// A cause of `substeps` (each cut's halves are counted there), so not added to total().
   int far_branch_cuts = 0;
   int pseudo_transient = 0;  ///< brace: substeps passed by pseudo-transient continuation
   int unstable_accepted = 0; ///< brace: substeps accepted with an unstable tangent
@@ -28,8 +29,8 @@ struct FallbackCounts {
   int modified_newton = 0;   ///< frame: steps that switched to modified Newton
   int broyden = 0;           ///< frame: steps that switched to Broyden's update
   int total() const {
-    return substeps + far_branch_cuts + pseudo_transient + unstable_accepted + energy_cuts +
-           modified_newton + broyden;
+    return substeps + pseudo_transient + unstable_accepted + energy_cuts + modified_newton +
+           broyden;
   }
 };
 
