@@ -101,6 +101,7 @@ nlohmann::ordered_json solid_block(const SolidCommand& command, const model::Sol
   block["explicit_steps"] = run.steps;
   block["first_axial_period_s"] = run.first_axial_period;
   block["time_per_deformation_s_per_mm"] = run.time_per_deformation;
+  block["min_excursion_time_s"] = run.min_excursion_time;
   block["duration_s"] = run.records.empty() ? 0.0 : run.records.back().time;
   block["contact_penalty_N_per_mm3"] = result.contact_penalty;
   block["quasi_static_floor_N_mm"] = result.quasi_static_floor;
@@ -143,10 +144,17 @@ CLI::App* add_solid_command(CLI::App& app, SolidCommand& command) {
                    "Loading time per mm of brace elongation, s/mm; default 20 first axial "
                    "periods of the core per yield deformation")
       ->check(CLI::PositiveNumber);
+  CLI::Option* duration =
+      solid
+          ->add_option("--duration", command.duration,
+                       "Total loading time, s (overrides --time-per-deformation)")
+          ->check(CLI::PositiveNumber);
   solid
-      ->add_option("--duration", command.duration,
-                   "Total loading time, s (overrides --time-per-deformation)")
-      ->check(CLI::PositiveNumber);
+      ->add_option("--min-excursion-time", command.min_excursion_time,
+                   "Shortest loading time of an excursion (reversal to reversal), s: slows "
+                   "the small first cycles, where the internal energy is small; default none")
+      ->check(CLI::PositiveNumber)
+      ->excludes(duration);
   solid
       ->add_option_function<int>(
           "--threads",
@@ -197,6 +205,7 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
   settings.run.outputs_per_segment = command.outputs_per_step;
   settings.run.time_per_deformation = command.time_per_deformation;
   settings.run.duration = command.duration;
+  settings.run.min_excursion_time = command.min_excursion_time;
 
   const fs::path fields_directory = command.output_directory / "fields";
   const bool snapshots = !command.snapshot_steps.empty() || command.snapshot_every > 0;

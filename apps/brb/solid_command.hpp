@@ -18,6 +18,7 @@ struct SolidCommand {
   int outputs_per_step = 1;               ///< records per protocol step
   double time_per_deformation = 0.0;      ///< s/mm; 0: the run's default (20 T_1 per dy)
   double duration = 0.0;                  ///< s; 0: from time_per_deformation
+  double min_excursion_time = 0.0;        ///< s; 0: no floor on an excursion's duration
   std::optional<int> threads;             ///< overrides the solid block's threads
   std::vector<int> snapshot_steps;        ///< hysteresis steps written as .vtu
   int snapshot_every = 0;                 ///< also every N-th step (0: off)

@@ -30,6 +30,9 @@ using Mortar = material::MortarDamage3D;
 /// k of an excursion from d_a at t_a to d_b, duration T, is passed at
 ///   t_k = t_a + (T / pi) acos(1 - 2 (d_k - d_a) / (d_b - d_a)),
 /// the inverse of d(t) = d_a + (d_b - d_a) (1 - cos(pi (t - t_a) / T)) / 2.
+/// T is at least min_excursion_time: the short excursions of a protocol's first cycles would
+/// otherwise pass zero deformation at the full ramp speed while the internal energy is still
+/// small (measured on Girona D3: KE / IE 0.219 in its 1 d_y cycle, 0.002 from 2.5 d_y on).
 struct Protocol {
   struct Excursion {
     double start = 0.0, duration = 0.0, from = 0.0, to = 0.0;
@@ -38,7 +41,8 @@ struct Protocol {
   std::vector<Excursion> excursions;
 
   /// `targets`: d_0 = 0, d_1, ... (at least two).
-  Protocol(const std::vector<double>& targets, double time_per_deformation) {
+  Protocol(const std::vector<double>& targets, double time_per_deformation,
+           double min_excursion_time) {
     point_times.push_back(0.0);
     double start = 0.0;
     std::size_t first = 0; // the excursion's first point
@@ -47,8 +51,9 @@ struct Protocol {
       std::size_t last = first + 1;
       while (last + 1 < targets.size() && (targets[last + 1] - targets[last]) * direction > 0.0)
         ++last;
-      Excursion excursion{start, time_per_deformation * std::abs(targets[last] - targets[first]),
-                          targets[first], targets[last]};
+      const double duration = std::max(
+          time_per_deformation * std::abs(targets[last] - targets[first]), min_excursion_time);
+      Excursion excursion{start, duration, targets[first], targets[last]};
       for (std::size_t k = first + 1; k < last; ++k) {
         const double fraction = (targets[k] - excursion.from) / (excursion.to - excursion.from);
         point_times.push_back(start + excursion.duration / std::numbers::pi *
@@ -127,10 +132,11 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     if (!std::isfinite(d))
       throw std::invalid_argument("solid brace run: a protocol deformation is not finite");
   if (!(settings.time_per_deformation >= 0.0) || !(settings.duration >= 0.0) ||
-      settings.outputs_per_segment < 1 ||
+      !(settings.min_excursion_time >= 0.0) || settings.outputs_per_segment < 1 ||
       !(settings.stable_step_safety > 0.0 && settings.stable_step_safety <= 1.0))
-    throw std::invalid_argument("solid brace run: time per deformation and duration must be >= 0, "
-                                "outputs per segment >= 1, the step safety in (0, 1]");
+    throw std::invalid_argument("solid brace run: time per deformation, duration and the "
+                                "shortest excursion time must be >= 0, outputs per segment "
+                                ">= 1, the step safety in (0, 1]");
   brace.steel.validate();
   const model::SolidMeshSpec solid = brace.solid.value_or(model::SolidMeshSpec{});
   const BraceMesh mesh = mesh_brace(brace, solid);
@@ -183,7 +189,8 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
                              : settings.time_per_deformation > 0.0
                                  ? settings.time_per_deformation
                                  : 20.0 * run.first_axial_period / yield_deformation;
-  const Protocol protocol(targets, run.time_per_deformation);
+  run.min_excursion_time = settings.min_excursion_time;
+  const Protocol protocol(targets, run.time_per_deformation, settings.min_excursion_time);
 
   // supports and the driven face (its displacement: the brace elongation, halved in a half model)
   SolidLoading loading;

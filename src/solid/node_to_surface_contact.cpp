@@ -490,10 +490,7 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
 }
 
 void NodeToSurfaceContact::set_threads(int threads) {
-  if (threads < 1)
-    throw std::invalid_argument("node-to-surface contact: threads must be >= 1 (got " +
-                                std::to_string(threads) + ")");
-  team_ = ThreadTeam(threads);
+  team_ = ThreadTeam(threads); // throws std::invalid_argument for threads < 1
 }
 
 bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,

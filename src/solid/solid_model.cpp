@@ -79,10 +79,7 @@ SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_
 }
 
 template <class Law> void SolidModel<Law>::set_threads(int threads) {
-  if (threads < 1)
-    throw std::invalid_argument("solid model: threads must be >= 1 (got " +
-                                std::to_string(threads) + ")");
-  team_ = ThreadTeam(threads);
+  team_ = ThreadTeam(threads); // throws std::invalid_argument for threads < 1
 }
 
 template <class Law>

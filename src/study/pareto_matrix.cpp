@@ -164,8 +164,8 @@ std::optional<std::size_t> finest_full_setting(const std::vector<ParetoSetting>&
 ParetoCase read_pareto_matrix(const fs::path& file) {
   const nlohmann::json document = io::read_json_file(file);
   const JsonValue root(document, file.string());
-  root.expect_object({"name", "kind", "description", "brace", "protocol", "model", "motion",
-                      "scale", "duration", "repeats", "reference", "auto_rule", "quick",
+  root.expect_object({"name", "kind", "description", "brace", "protocol", "solid", "model",
+                      "motion", "scale", "duration", "repeats", "reference", "auto_rule", "quick",
                       "settings"},
                      "a pareto matrix: {\"name\": ..., \"kind\": ..., \"settings\": [...]}");
   ParetoCase study_case;
@@ -189,7 +189,7 @@ ParetoCase read_pareto_matrix(const fs::path& file) {
   // The keys of the other kind are errors: a frame case with a protocol is a mistake.
   const bool frame = study_case.kind == CaseKind::frame;
   const std::vector<std::string> other_keys =
-      frame ? std::vector<std::string>{"brace", "protocol"}
+      frame ? std::vector<std::string>{"brace", "protocol", "solid"}
             : std::vector<std::string>{"model", "motion", "scale", "duration"};
   for (const std::string& key : other_keys) {
     if (const auto value = root.find(key))
@@ -210,6 +210,8 @@ ParetoCase read_pareto_matrix(const fs::path& file) {
     study_case.brace = existing_file(root.at("brace", "the brace file"), "brace", folder);
     study_case.protocol =
         existing_file(root.at("protocol", "the protocol file"), "protocol", folder);
+    if (const auto solid = root.find("solid"))
+      study_case.solid = existing_file(*solid, "summary.json of a brb solid run", folder);
   }
   if (const auto repeats = root.find("repeats"))
     study_case.repeats = whole_number(*repeats, "repeats", 1, kMaxRepeats);

@@ -100,4 +100,17 @@ ParetoErrors frame_errors(const FrameResponse& reference, const FrameResponse& r
   return errors;
 }
 
+std::optional<double> solid_cycle_energy_error(const ComponentResponse& solid,
+                                               const ComponentResponse& run) {
+  if (!run.completed || solid.cycles.size() < run.cycles.size())
+    return std::nullopt;
+  ComponentResponse compared = solid;
+  compared.cycles.resize(run.cycles.size());
+  for (std::size_t i = 0; i < run.cycles.size(); ++i) {
+    if (relative(run.cycles[i].amplitude, compared.cycles[i].amplitude) > kSolidAmplitudeTolerance)
+      return std::nullopt;
+  }
+  return component_errors(compared, run).cycle_energy;
+}
+
 } // namespace brb::study

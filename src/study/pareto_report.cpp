@@ -112,6 +112,17 @@ void case_section(std::ostream& out, const CaseOutcome& outcome) {
       << (study_case.auto_rule == AutoRuleRole::derive ? "used to derive it"
                                                        : "not used to derive it (a check)")
       << "\n";
+  if (outcome.solid) {
+    out << "- `brb solid` reference (column \"vs `brb solid`\": cycle energy against it): `"
+        << outcome.solid->file.lexically_normal().string() << "`, "
+        << time_text(outcome.solid->run_seconds) << " ("
+        << (outcome.solid->response.completed ? "completed" : "stopped early") << ", "
+        << outcome.solid->response.cycles.size() << " cycles; its own run, not rerun here)";
+    if (reference.ran && reference.median_time > 0.0)
+      out << ", " << fixed(outcome.solid->run_seconds / reference.median_time, 4)
+          << " times the reference setting's time";
+    out << "\n";
+  }
   if (const auto cheapest = cheapest_within(outcome, kAcceptanceError)) {
     const SettingOutcome& best = outcome.settings[*cheapest];
     out << "- cheapest setting within " << percent(kAcceptanceError) << " "
@@ -150,7 +161,8 @@ void case_section(std::ostream& out, const CaseOutcome& outcome) {
           << percent(s.errors.cid) << " | ";
     } else {
       out << percent(s.errors.cycle_energy) << " | " << percent(s.errors.peak_force) << " | "
-          << percent(s.errors.beta) << " | n/a | ";
+          << percent(s.errors.beta) << " | "
+          << (outcome.solid ? percent(s.errors.solid) : std::string("n/a")) << " | ";
     }
     out << (s.front_primary ? "**front**" : "") << " | " << (s.front_worst ? "**front**" : "")
         << " | " << status_of(s) << " |\n";
@@ -257,9 +269,11 @@ std::string pareto_markdown(const std::vector<CaseOutcome>& outcomes,
          "brace CID = max over braces of |CID - CID_ref| / max(largest reference CID, 1 dy).\n"
       << "- front: on the Pareto front of (time, primary error: cycle energy for components, "
          "peak drift for frames); front (all): of (time, worst of the case's metrics).\n"
-      << "- `brb solid` (the 3D continuum model, issue 6) does not exist yet: the column "
-         "\"vs `brb solid`\" is a placeholder (`solid_error` in the CSV) for its error once it "
-         "does.\n"
+      << "- vs `brb solid`: the cycle energy error (as above) against the case's committed run "
+         "of the 3D continuum model (issue 6), where its matrix names one (\"solid\"), on the "
+         "cycles of the case's protocol (the 3D run's protocol begins with them); n/a: no 3D "
+         "run; -: the setting did not complete or the cycles' amplitudes differ by more than "
+      << percent(kSolidAmplitudeTolerance) << " (`solid_error` in the CSV).\n"
       << "- Contact (gap-link) spacing follows the core elements (one link per core station); "
          "the step is max_step (dy) for components, dt for frames.\n\n";
   for (const CaseOutcome& outcome : outcomes)

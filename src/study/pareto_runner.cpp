@@ -6,6 +6,7 @@
 #include "brb/io/brace_input.hpp"
 #include "brb/io/frame_input.hpp"
 #include "brb/io/ground_motion.hpp"
+#include "brb/io/json_input.hpp"
 #include "brb/io/protocol.hpp"
 #include "brb/model/brace_fidelity.hpp"
 #include "brb/model/brace_model.hpp"
@@ -32,6 +33,7 @@ constexpr double kDefaultMaxStepInDy = 0.1;
 /// The inputs of a case, read once before any run (every input error shows first).
 struct CaseInputs {
   model::BraceSpec brace;              ///< component
+  std::optional<SolidReference> solid; ///< component, when the matrix names one
   model::FrameSpec frame;              ///< frame
   analysis::GroundAcceleration ground; ///< frame: the window of the record
 };
@@ -82,7 +84,8 @@ RunResult run_component(const ParetoCase& study_case, const CaseInputs& inputs,
   run.component.completed = result.completed;
   run.component.iterations = result.iterations;
   for (const analysis::CycleMetrics& cycle : result.cycles)
-    run.component.cycles.push_back({cycle.energy, cycle.max_tension, cycle.max_compression});
+    run.component.cycles.push_back(
+        {cycle.energy, cycle.max_tension, cycle.max_compression, cycle.amplitude});
   run.stop_reason = result.stop_reason;
   return run;
 }
@@ -138,10 +141,40 @@ RunResult run_frame(const ParetoCase& study_case, const CaseInputs& inputs,
   return run;
 }
 
+} // namespace
+
+SolidReference read_solid_reference(const std::filesystem::path& summary_file) {
+  const nlohmann::json document = io::read_json_file(summary_file);
+  const io::JsonValue root(document, summary_file.string());
+  SolidReference reference;
+  reference.file = summary_file;
+  const io::JsonValue solid = root.at("solid", "the block a brb solid run writes");
+  reference.run_seconds = solid.at("run_seconds", "the run's wall time, s").number("run time, s");
+  const io::JsonValue completed = root.at("completed", "whether the run completed");
+  if (!completed.json().is_boolean())
+    throw completed.error("true or false");
+  reference.response.completed = completed.json().get<bool>();
+  const io::JsonValue cycles = root.at("cycles", "the run's completed cycles");
+  const std::size_t count = cycles.expect_array(100000, "the run's completed cycles");
+  for (std::size_t i = 0; i < count; ++i) {
+    const io::JsonValue cycle = cycles.element(i);
+    reference.response.cycles.push_back(
+        {cycle.at("energy", "N mm").number("loop energy, N mm"),
+         cycle.at("max_tension", "N").number("largest tension, N"),
+         cycle.at("max_compression", "N").number("largest compression, N"),
+         cycle.at("amplitude", "mm").number("cycle amplitude, mm")});
+  }
+  return reference;
+}
+
+namespace {
+
 CaseInputs read_inputs(const ParetoCase& study_case) {
   CaseInputs inputs;
   if (study_case.kind == CaseKind::component) {
     inputs.brace = io::read_brace(study_case.brace);
+    if (study_case.solid)
+      inputs.solid = read_solid_reference(*study_case.solid);
     // The protocol is checked here, with the brace's dy, so a bad one stops the study first.
     const model::BraceModel truss = model::build_brace_truss_model(inputs.brace);
     const double dy = truss.yield_deformation;
@@ -291,6 +324,7 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
     const ParetoCase& study_case = cases[c];
     CaseOutcome& outcome = outcomes[c];
     outcome.study_case = study_case;
+    outcome.solid = inputs[c].solid;
     if (study_case.kind == CaseKind::frame) {
       std::ostringstream window;
       window << "the first " << study_case.duration << " s of "
@@ -341,6 +375,8 @@ void evaluate_case(CaseOutcome& outcome) {
                            ? component_errors(reference.component, setting.component)
                            : frame_errors(reference.frame, setting.frame);
     }
+    if (setting.ran && outcome.solid)
+      setting.errors.solid = solid_cycle_energy_error(outcome.solid->response, setting.component);
     const double time = setting.ran ? setting.median_time : std::nan("");
     primary.push_back({time, setting.errors.primary()});
     worst.push_back({time, setting.errors.worst()});

@@ -118,7 +118,7 @@ TEST(BenchParetoCli, ComponentMatrixWritesTablesAndFront) {
   EXPECT_EQ(table.at(0, "runs"), "2");
   EXPECT_EQ(table.at(3, "runs"), "1");
   EXPECT_EQ(table.at(1, "built_as"), "full"); // no casing: `auto` builds the full brace
-  EXPECT_EQ(table.at(2, "solid_error"), "");  // brb solid does not exist yet
+  EXPECT_EQ(table.at(2, "solid_error"), "");  // the matrix names no brb solid run
   for (std::size_t r = 0; r < table.rows.size(); ++r)
     EXPECT_EQ(table.at(r, "status"), "completed");
   expect_front_consistent(table);

@@ -180,6 +180,22 @@ TEST(SolidCli, WritesTheChosenSnapshotsAndTheirCollection) {
   EXPECT_NE(pvd.find("fields/step_000004.vtu"), std::string::npos) << pvd;
 }
 
+TEST(SolidCli, TheShortestExcursionTimeIsKeptInTheSummaryAndExcludesADuration) {
+  const SolidFiles files(bar_brace());
+  const CliRun run = run_brb(files.arguments("--min-excursion-time 0.5"));
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  const json summary = json::parse(read_file(files.out / "summary.json"));
+  EXPECT_EQ(summary["solid"]["min_excursion_time_s"].get<double>(), 0.5);
+  // every excursion of the history lasts at least 0.5 s: the run at least that per excursion
+  EXPECT_GE(summary["solid"]["duration_s"].get<double>(), 0.5);
+
+  const SolidFiles both(bar_brace());
+  const CliRun refused = run_brb(both.arguments("--min-excursion-time 0.5 --duration 2"));
+  EXPECT_EQ(refused.exit_code, 2) << refused.out << refused.err;
+  EXPECT_NE(refused.err.find("--min-excursion-time"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(both.out));
+}
+
 TEST(SolidCli, ABadSolidBlockIsAnInputErrorAndNothingIsWritten) {
   json brace = bar_brace();
   brace["solid"]["steel_density"] = -7.85e-9;

@@ -136,6 +136,48 @@ TEST(SolidBraceRun, OneRampPerExcursionPassesThePointsWithoutStopping) {
                  std::to_string(ends[0]->kinetic / ends[2]->kinetic));
 }
 
+TEST(SolidBraceRun, TheShortestExcursionTimeSlowsOnlyTheShortExcursions) {
+  // Points 0.1 d_y, then -0.2 d_y: two excursions of 0.1 and 0.3 d_y. With a floor T_min
+  // between their ramp times (tpd x 0.1 d_y < T_min < tpd x 0.3 d_y) the first lasts T_min and
+  // the second keeps tpd x 0.3 d_y (the definition), so the records that end the two points
+  // fall at T_min and T_min + tpd x 0.3 d_y; the slower first ramp moves the brace at a
+  // third of its speed, so its kinetic energy halfway is about 1/9 of the unfloored run's.
+  const double yield = 355.0 / 210000.0 * 600.0;
+  const std::vector<double> points{0.1 * yield, -0.2 * yield};
+  const SolidBraceRun plain = run_solid_brace(bare_core(), points);
+  ASSERT_TRUE(plain.completed) << plain.failure;
+  const double floor_time = 3.0 * plain.time_per_deformation * 0.1 * yield;
+  SolidBraceRunSettings settings;
+  settings.min_excursion_time = floor_time;
+  const SolidBraceRun slowed = run_solid_brace(bare_core(), points, settings);
+  ASSERT_TRUE(slowed.completed) << slowed.failure;
+  EXPECT_EQ(slowed.min_excursion_time, floor_time);
+  std::vector<const SolidBraceRecord*> ends(points.size(), nullptr);
+  for (const SolidBraceRecord& r : slowed.records)
+    if (r.point > 0)
+      ends[static_cast<std::size_t>(r.point) - 1] = &r;
+  ASSERT_NE(ends[0], nullptr);
+  ASSERT_NE(ends[1], nullptr);
+  EXPECT_NEAR(ends[0]->time, floor_time, 1e-12 * floor_time);
+  EXPECT_NEAR(ends[1]->time, floor_time + plain.time_per_deformation * 0.3 * yield,
+              1e-12 * floor_time);
+  // kinetic energy at the middle of the first excursion (the record nearest to half of it)
+  const auto halfway_kinetic = [](const SolidBraceRun& run, double half_time) {
+    const SolidBraceRecord* nearest = &run.records.front();
+    for (const SolidBraceRecord& r : run.records)
+      if (std::abs(r.time - half_time) < std::abs(nearest->time - half_time))
+        nearest = &r;
+    return nearest->kinetic;
+  };
+  const double ratio = halfway_kinetic(slowed, 0.5 * floor_time) /
+                       halfway_kinetic(plain, 0.5 * plain.time_per_deformation * 0.1 * yield);
+  EXPECT_NEAR(ratio, 1.0 / 9.0, 0.03);
+  RecordProperty("halfway_kinetic_slowed_over_plain", std::to_string(ratio));
+  SolidBraceRunSettings negative;
+  negative.min_excursion_time = -1.0;
+  EXPECT_THROW(run_solid_brace(bare_core(), points, negative), std::invalid_argument);
+}
+
 TEST(SolidBraceRun, MassScalingShortensTheRunAtTheSameLoadingRate) {
   // Densities x 4: the element frequencies fall by 2 (w ~ 1 / sqrt(rho)), so the stable step
   // doubles while the loading time, set by the physical density's first axial period, stays:

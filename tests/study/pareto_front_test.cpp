@@ -1,9 +1,12 @@
 // The Pareto front and the error metrics of the run-time-against-error study, on hand-made
 // points and responses whose fronts and errors are worked out by hand in the comments.
+#include "brb/io/input_error.hpp"
 #include "brb/study/pareto_front.hpp"
 #include "brb/study/pareto_metrics.hpp"
 #include "brb/study/pareto_report.hpp"
 #include "brb/study/pareto_runner.hpp"
+
+#include "io/scratch_directory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -62,6 +65,35 @@ TEST(ParetoMetrics, ComponentErrorsFollowTheirDefinitions) {
   short_run.cycles.pop_back();
   EXPECT_EQ(component_errors(reference, short_run).primary(), kInfinite);
   EXPECT_EQ(component_errors(reference, reference).worst(), 0.0);
+}
+
+TEST(ParetoMetrics, SolidErrorComparesTheRunsCyclesWithThe3DRunsFirstOnes) {
+  // The 3D run went one cycle further (its protocol begins with the run's): only the run's
+  // cycles count, with the 3D run as the reference of the cycle-energy definition.
+  ComponentResponse solid;
+  solid.completed = true;
+  solid.cycles = {
+      {100.0, 200.0, -210.0, 1.0}, {200.0, 250.0, -270.0, 2.0}, {400.0, 260.0, -280.0, 4.0}};
+  ComponentResponse run;
+  run.completed = true;
+  run.cycles = {{103.0, 200.0, -210.0, 1.0}, {190.0, 250.0, -270.0, 2.0}};
+  const std::optional<double> error = solid_cycle_energy_error(solid, run);
+  ASSERT_TRUE(error.has_value());
+  EXPECT_NEAR(*error, 10.0 / 200.0, 1e-15); // max(3 / 100, 10 / 200)
+
+  // nothing to compare: the run stopped early, the 3D run is shorter, or another protocol
+  ComponentResponse stopped = run;
+  stopped.completed = false;
+  EXPECT_FALSE(solid_cycle_energy_error(solid, stopped).has_value());
+  ComponentResponse longer = run;
+  longer.cycles.push_back({400.0, 260.0, -280.0, 4.0});
+  longer.cycles.push_back({400.0, 260.0, -280.0, 4.0});
+  EXPECT_FALSE(solid_cycle_energy_error(solid, longer).has_value());
+  ComponentResponse other_amplitude = run;
+  other_amplitude.cycles[1].amplitude = 2.0 * (1.0 + 2.0 * kSolidAmplitudeTolerance);
+  EXPECT_FALSE(solid_cycle_energy_error(solid, other_amplitude).has_value());
+  other_amplitude.cycles[1].amplitude = 2.0 * (1.0 + 0.5 * kSolidAmplitudeTolerance);
+  EXPECT_TRUE(solid_cycle_energy_error(solid, other_amplitude).has_value());
 }
 
 TEST(ParetoMetrics, FrameErrorsFollowTheirDefinitions) {
@@ -175,6 +207,56 @@ TEST(ParetoReport, CsvHasOneRowPerSettingAndMarksTheFront) {
   const std::string page = pareto_markdown({outcome}, description);
   EXPECT_NE(page.find("`truss` (0.00 %"), std::string::npos);
   EXPECT_NE(page.find("brb solid"), std::string::npos);
+}
+
+TEST(ParetoReport, ASolidRunGivesEachSettingsEnergyErrorAgainstIt) {
+  // The 3D run's loop is 100 / 1.25 = 80 N mm: the reference (100) and the truss are 25 % off
+  // it, the rough setting (110) 37.5 %; a case without one shows n/a.
+  CaseOutcome outcome = hand_made_case();
+  outcome.study_case.name = "hand";
+  SolidReference solid;
+  solid.file = "solid/x1/summary.json";
+  solid.run_seconds = 1000.0;
+  solid.response.completed = true;
+  solid.response.cycles = {{80.0, 190.0, -200.0}};
+  outcome.solid = solid;
+  evaluate_case(outcome);
+  EXPECT_NEAR(*outcome.settings[0].errors.solid, 0.25, 1e-15);
+  EXPECT_NEAR(*outcome.settings[2].errors.solid, 0.375, 1e-15);
+  // not part of the errors against the finest full setting
+  EXPECT_EQ(outcome.settings[0].errors.worst(), 0.0);
+  ParetoRunDescription description;
+  description.command_line = "brb bench pareto";
+  const std::string page = pareto_markdown({outcome}, description);
+  EXPECT_NE(page.find("| 25.0 % | "), std::string::npos) << page;
+  EXPECT_NE(page.find("| 37.5 % | "), std::string::npos) << page;
+  EXPECT_NE(page.find("`solid/x1/summary.json`, 1000 s"), std::string::npos) << page;
+  EXPECT_NE(page.find("10 times the reference setting's time"), std::string::npos) << page;
+  const std::string without = pareto_markdown({hand_made_case()}, description);
+  EXPECT_NE(without.find("| n/a | "), std::string::npos);
+}
+
+TEST(ParetoReport, ReadsTheCyclesOfABrbSolidSummary) {
+  const brb::testing::ScratchDirectory scratch;
+  const auto file = scratch.write("summary.json",
+                                  R"({"completed": true, "solid": {"run_seconds": 12.5}, "cycles": [
+          {"index": 1, "amplitude": 0.7, "energy": 142.5, "max_tension": 25980.0,
+           "max_compression": -26083.0}]})");
+  const SolidReference solid = read_solid_reference(file);
+  EXPECT_EQ(solid.run_seconds, 12.5);
+  EXPECT_TRUE(solid.response.completed);
+  ASSERT_EQ(solid.response.cycles.size(), 1u);
+  EXPECT_EQ(solid.response.cycles[0].amplitude, 0.7);
+  EXPECT_EQ(solid.response.cycles[0].energy, 142.5);
+  EXPECT_EQ(solid.response.cycles[0].max_compression, -26083.0);
+  const auto bad = scratch.write("bad.json", R"({"completed": true, "cycles": []})");
+  try {
+    (void)read_solid_reference(bad);
+    ADD_FAILURE() << "a summary without its solid block was read";
+  } catch (const brb::io::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("solid"), std::string::npos) << error.what();
+    EXPECT_EQ(error.file(), bad.string());
+  }
 }
 
 } // namespace

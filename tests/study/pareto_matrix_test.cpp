@@ -122,6 +122,11 @@ TEST(ParetoMatrix, ErrorsNameTheJsonPathAndWhatWasExpected) {
   EXPECT_NE(error_of(matrix).find("/colour: unknown key"), std::string::npos);
 
   matrix = component_matrix();
+  matrix["solid"] = "/no/such/summary.json";
+  EXPECT_NE(error_of(matrix).find("/solid: summary.json of a brb solid run: no such file"),
+            std::string::npos);
+
+  matrix = component_matrix();
   matrix["duration"] = 3;
   EXPECT_NE(error_of(matrix).find("/duration: \"duration\" does not apply to a component case"),
             std::string::npos);

@@ -124,6 +124,21 @@ TEST(StressResult, NearestRankPercentiles) {
   EXPECT_EQ(distribution_of({}).max, 0.0);
 }
 
+TEST(StressResult, FallbackTotalCountsEachSubstepOnce) {
+  // Far-branch and energy cuts halve a substep, and its halves are counted in `substeps`: they
+  // say why, and adding them would count the same substeps twice.
+  FallbackCounts counts;
+  counts.substeps = 10;
+  counts.far_branch_cuts = 4;
+  counts.energy_cuts = 3;
+  EXPECT_EQ(counts.total(), 10);
+  counts.pseudo_transient = 2;
+  counts.unstable_accepted = 1;
+  counts.modified_newton = 5;
+  counts.broyden = 6;
+  EXPECT_EQ(counts.total(), 24);
+}
+
 TEST(StressResult, AcceptanceOfTheIssue) {
   StressResult result;
   result.completed = true;

@@ -21,7 +21,8 @@
 //   elongation reported is twice the driven face's displacement.
 // - Loading: the protocol's targets d_1, d_2, ... from d_0 = 0, each excursion (the points from
 //   one reversal to the next, in one direction) a smooth 1 - cos ramp (smooth_ramp: zero
-//   velocity at both ends) of duration time_per_deformation x |excursion|, passing the points
+//   velocity at both ends) of duration time_per_deformation x |excursion| (at least
+//   min_excursion_time, when given), passing the points
 //   inside it without stopping; records at equal times between the moments it passes them.
 //   Default time_per_deformation: 20 T_1 / d_y, with T_1 = 4 L / sqrt(E / rho) the first
 //   axial period of the isolated core clamped at one end and free at the other (L: the whole
@@ -58,6 +59,9 @@ struct SolidBraceRunSettings {
   double time_per_deformation = 0.0;
   /// Total duration of the protocol (s, > 0); overrides time_per_deformation when given.
   double duration = 0.0;
+  /// Shortest duration of an excursion (s, >= 0; 0: none): a floor on the ramp time of the
+  /// small first cycles, slowing them where the internal energy is still small.
+  double min_excursion_time = 0.0;
   int outputs_per_segment = 20;    ///< records per protocol segment (>= 1)
   double stable_step_safety = 0.9; ///< on the body's stable step
 };
@@ -86,6 +90,7 @@ struct SolidBraceRun {
   int nodes = 0, elements = 0;
   double first_axial_period = 0.0;   ///< T_1 of the header (s)
   double time_per_deformation = 0.0; ///< s/mm used
+  double min_excursion_time = 0.0;   ///< s used (0: none)
 };
 
 class SolidBody;

@@ -10,6 +10,9 @@
 //   { "name": "girona_D3", "kind": "component",     // or "frame"
 //     "description": "...",                         // optional, quoted in PARETO.md
 //     "brace": "../../validation/girona_D3/brace.json", "protocol": "d3_protocol.json",
+//     "solid": "../../validation/solid_girona_D3/solid/x1/summary.json",  // optional: the
+//         // summary.json of a `brb solid` run of the brace under a protocol that begins with
+//         // the case's (components; the column "vs `brb solid`")
 //     // frame: "model": "...model.json", "motion": "...AT2", "scale": 1, "duration": 4,
 //     "repeats": 3,                                 // optional, default 1
 //     "reference": "full-16",                       // optional: default the finest full
@@ -64,10 +67,12 @@ struct ParetoCase {
   std::filesystem::path matrix_file;
   std::filesystem::path brace;    ///< component
   std::filesystem::path protocol; ///< component
-  std::filesystem::path model;    ///< frame
-  std::filesystem::path motion;   ///< frame
-  double scale = 1.0;             ///< frame: factor on the record
-  double duration = 0.0;          ///< s, frame: the window from the record's start (> 0)
+  /// component, optional: summary.json of a `brb solid` run of the brace (see above)
+  std::optional<std::filesystem::path> solid;
+  std::filesystem::path model;  ///< frame
+  std::filesystem::path motion; ///< frame
+  double scale = 1.0;           ///< frame: factor on the record
+  double duration = 0.0;        ///< s, frame: the window from the record's start (> 0)
   int repeats = 1;
   AutoRuleRole auto_rule = AutoRuleRole::derive;
   std::optional<double> quick_duration;                ///< frame, for --quick

@@ -31,8 +31,22 @@ struct SettingOutcome {
   bool front_worst = false;   ///< on the front of (median time, worst error)
 };
 
+/// A `brb solid` run of a component case's brace (the matrix's "solid"): its completed cycles
+/// and its wall time.
+struct SolidReference {
+  std::filesystem::path file; ///< its summary.json
+  ComponentResponse response;
+  double run_seconds = 0.0;
+};
+
+/// Reads the cycles ("cycles": amplitude, energy, max_tension, max_compression), "completed"
+/// and "solid"/"run_seconds" of a `brb solid` summary.json; io::InputError naming the file and
+/// the field otherwise.
+SolidReference read_solid_reference(const std::filesystem::path& summary_file);
+
 struct CaseOutcome {
   ParetoCase study_case;
+  std::optional<SolidReference> solid;  ///< component, when the matrix names one
   std::vector<SettingOutcome> settings; ///< in the matrix's order
   double yield_deformation = 0.0;       ///< mm, component (of the reference brace)
   std::string window;                   ///< what was analysed, in words

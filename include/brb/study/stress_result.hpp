@@ -25,12 +25,12 @@ struct FallbackCounts {
   int far_branch_cuts = 0;
   int pseudo_transient = 0;  ///< brace: substeps passed by pseudo-transient continuation
   int unstable_accepted = 0; ///< brace: substeps accepted with an unstable tangent
-  int energy_cuts = 0;       ///< brace: substeps cut by the energy-error guard
-  int modified_newton = 0;   ///< frame: steps that switched to modified Newton
-  int broyden = 0;           ///< frame: steps that switched to Broyden's update
+  /// brace: substeps cut by the energy-error guard; a cause of `substeps` too (not in total()).
+  int energy_cuts = 0;
+  int modified_newton = 0; ///< frame: steps that switched to modified Newton
+  int broyden = 0;         ///< frame: steps that switched to Broyden's update
   int total() const {
-    return substeps + pseudo_transient + unstable_accepted + energy_cuts + modified_newton +
-           broyden;
+    return substeps + pseudo_transient + unstable_accepted + modified_newton + broyden;
   }
 };
 
