@@ -32,7 +32,8 @@ using Mortar = material::MortarDamage3D;
 /// the inverse of d(t) = d_a + (d_b - d_a) (1 - cos(pi (t - t_a) / T)) / 2.
 /// T is at least min_excursion_time: the short excursions of a protocol's first cycles would
 /// otherwise pass zero deformation at the full ramp speed while the internal energy is still
-/// small (measured on Girona D3: KE / IE 0.219 in its 1 d_y cycle, 0.002 from 2.5 d_y on).
+/// small (measured on Girona D3: KE / IE 0.219 in its 1 d_y cycle, at most 0.001 from its
+/// 2 d_y cycle's second excursion on).
 struct Protocol {
   struct Excursion {
     double start = 0.0, duration = 0.0, from = 0.0, to = 0.0;
@@ -137,6 +138,10 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     throw std::invalid_argument("solid brace run: time per deformation, duration and the "
                                 "shortest excursion time must be >= 0, outputs per segment "
                                 ">= 1, the step safety in (0, 1]");
+  // A floor on the excursions would lengthen the protocol past a total duration asked for.
+  if (settings.duration > 0.0 && settings.min_excursion_time > 0.0)
+    throw std::invalid_argument("solid brace run: a total duration and a shortest excursion "
+                                "time exclude each other");
   brace.steel.validate();
   const model::SolidMeshSpec solid = brace.solid.value_or(model::SolidMeshSpec{});
   const BraceMesh mesh = mesh_brace(brace, solid);

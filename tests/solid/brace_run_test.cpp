@@ -176,6 +176,9 @@ TEST(SolidBraceRun, TheShortestExcursionTimeSlowsOnlyTheShortExcursions) {
   SolidBraceRunSettings negative;
   negative.min_excursion_time = -1.0;
   EXPECT_THROW(run_solid_brace(bare_core(), points, negative), std::invalid_argument);
+  SolidBraceRunSettings with_duration = settings;
+  with_duration.duration = 1.0;
+  EXPECT_THROW(run_solid_brace(bare_core(), points, with_duration), std::invalid_argument);
 }
 
 TEST(SolidBraceRun, MassScalingShortensTheRunAtTheSameLoadingRate) {

@@ -60,7 +60,8 @@ struct SolidBraceRunSettings {
   /// Total duration of the protocol (s, > 0); overrides time_per_deformation when given.
   double duration = 0.0;
   /// Shortest duration of an excursion (s, >= 0; 0: none): a floor on the ramp time of the
-  /// small first cycles, slowing them where the internal energy is still small.
+  /// small first cycles, slowing them where the internal energy is still small. Not with a
+  /// duration (the floor would lengthen the protocol past it).
   double min_excursion_time = 0.0;
   int outputs_per_segment = 20;    ///< records per protocol segment (>= 1)
   double stable_step_safety = 0.9; ///< on the body's stable step

@@ -55,7 +55,7 @@ struct FrameResponse {
 struct ParetoErrors {
   std::optional<double> cycle_energy, peak_force, beta;  ///< components
   std::optional<double> peak_drift, residual_drift, cid; ///< frames
-  /// cycle_energy against the case's `brb solid` run (issue 6; solid_errors), where the
+  /// cycle_energy against the case's `brb solid` run (issue 6; solid_cycle_energy_error), where the
   /// matrix names one; not part of primary() or worst(), which measure against the finest
   /// `full` setting.
   std::optional<double> solid;
