@@ -42,6 +42,7 @@ constexpr double kDefaultStepsPerYieldDeformation = 10.0;
 constexpr const char* kHysteresisFile = "hysteresis.csv";
 constexpr const char* kSummaryFile = "summary.json";
 constexpr const char* kElementHistoryFile = "element_history.csv";
+constexpr const char* kShapeFile = "shape.csv";
 
 /// The text summary lists at most this many cycles (the first and the last half of them);
 /// summary.json has them all.
@@ -92,6 +93,7 @@ struct OutputFiles {
   fs::path hysteresis;
   fs::path summary;
   std::optional<fs::path> element_history;
+  std::optional<fs::path> shape;
 };
 
 void print_report(std::ostream& out, const CyclicCommand& command, const std::string& name,
@@ -137,6 +139,8 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
       << "        " << files.summary.string() << "\n";
   if (files.element_history)
     out << "        " << files.element_history->string() << "\n";
+  if (files.shape)
+    out << "        " << files.shape->string() << "\n";
 }
 
 } // namespace
@@ -227,6 +231,22 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
                    "Also write element_history.csv: core strain, dissipated energy, cumulative "
                    "inelastic deformation, lateral displacements, half-waves, damage and flags "
                    "after every step");
+  cyclic
+      ->add_option_function<std::vector<int>>(
+          "--shape-steps",
+          [&command](const std::vector<int>& steps) {
+            for (const int step : steps) {
+              if (step < 0)
+                throw CLI::ValidationError("--shape-steps", "step numbers must be >= 0 (0: the "
+                                                            "unloaded initial state)");
+            }
+            command.shape_steps = steps;
+          },
+          "Also write shape.csv: the deformed brace (lateral displacements of the core and "
+          "casing, bearing forces, mortar damage per node) after these steps (hysteresis.csv's "
+          "step numbers, comma-separated) and after the last converged step")
+      ->delimiter(',')
+      ->type_name("STEP,...");
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
@@ -234,6 +254,8 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
       "  summary.json: yield force and deformation, peak forces, energy per cycle, solver\n"
       "    statistics, energy balance, element outputs\n"
       "  element_history.csv (with --histories): the element outputs after every step\n"
+      "  shape.csv (with --shape-steps): step,node,position,lateral_y,lateral_z,station,\n"
+      "    casing_lateral_y,casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage\n"
       "Units: N, mm, MPa. Exit status: 0 completed, 1 the analysis stopped early (what was\n"
       "computed is written) or the run failed, 2 invalid input or usage (nothing written).");
   return cyclic;
@@ -256,20 +278,24 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   analysis::NewtonSettings settings;
   settings.energy_tolerance = command.energy_tolerance;
   settings.balance_tolerance = command.balance_tolerance;
-  const analysis::CyclicTestResult result =
-      analysis::run_cyclic_test(brace, protocol.deformation, protocol.cycle,
-                                protocol.cycle_amplitude, settings, command.histories);
+  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
+      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings,
+      command.histories, command.shape_steps);
 
   // Written also when the analysis stopped early: what was computed is a result too.
   OutputFiles files{command.output_directory / kHysteresisFile,
-                    command.output_directory / kSummaryFile, std::nullopt};
+                    command.output_directory / kSummaryFile, std::nullopt, std::nullopt};
   if (command.histories)
     files.element_history = command.output_directory / kElementHistoryFile;
+  if (command.shape_steps)
+    files.shape = command.output_directory / kShapeFile;
   fs::create_directory(command.output_directory);
   io::write_file_atomically(files.hysteresis, io::hysteresis_table(result).text());
   if (files.element_history) {
     io::write_file_atomically(*files.element_history, io::element_history_table(result).text());
   }
+  if (files.shape)
+    io::write_file_atomically(*files.shape, io::brace_shape_table(result).text());
   io::write_file_atomically(
       files.summary,
       io::cyclic_summary_json(name, brace.yield_deformation, brace.yield_force, result).dump(2) +

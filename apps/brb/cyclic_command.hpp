@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace brb::cli {
 
@@ -28,6 +29,9 @@ struct CyclicCommand {
   double balance_tolerance = 0.0;
   /// Also write DIR/element_history.csv: the element outputs after every step.
   bool histories = false;
+  /// Also write DIR/shape.csv: the deformed shape after these steps (hysteresis.csv's step
+  /// numbers) and after the last converged step.
+  std::optional<std::vector<int>> shape_steps;
 };
 
 /// The brace's name in the outputs: its "name", or the brace file's name without extension.

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <optional>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 namespace brb::analysis {
@@ -87,6 +88,11 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
                     tracker_.max_lateral_displacement(position),
                     report.substeps};
     tracker_.observe(position, step.deformation, step.force);
+    if (shape_steps_ &&
+        std::binary_search(shape_steps_->begin(), shape_steps_->end(), step_index)) {
+      const std::vector<BraceShapeNode> nodes = shape(step_index);
+      result_.shapes.insert(result_.shapes.end(), nodes.begin(), nodes.end());
+    }
     if (record_history_) {
       const EnergyBalance& energy = analysis_.energy();
       result_.history.push_back({step.step, core_strain(),
@@ -99,8 +105,56 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
   return true;
 }
 
+void CyclicTest::record_shapes_at(std::vector<int> steps) {
+  std::sort(steps.begin(), steps.end());
+  shape_steps_ = std::move(steps);
+  if (std::binary_search(shape_steps_->begin(), shape_steps_->end(), 0) && result_.shapes.empty())
+    result_.shapes = shape(0);
+}
+
+std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
+  const model::BraceHandles& brace = *brace_;
+  const element::Vector3& axis = brace.axes.col(0);
+  const auto lateral = [&](int node) {
+    const element::Vector3 motion = analysis_.node(node).position - brace_->model.coordinates(node);
+    return std::pair{motion.dot(brace.axes.col(1)), motion.dot(brace.axes.col(2))};
+  };
+  std::vector<BraceShapeNode> nodes;
+  nodes.reserve(brace.nodes.size());
+  for (std::size_t n = 0; n < brace.nodes.size(); ++n) {
+    const int node = brace.nodes[n];
+    BraceShapeNode point;
+    point.step = step;
+    point.node = static_cast<int>(n);
+    point.position = axis.dot(brace_->model.coordinates(node) - brace.origin);
+    std::tie(point.lateral_y, point.lateral_z) = lateral(node);
+    if (brace.casing) {
+      const model::CasingModel& casing = *brace.casing;
+      const auto station = std::find(casing.core_nodes.begin(), casing.core_nodes.end(), node);
+      if (station != casing.core_nodes.end()) {
+        const auto s = static_cast<std::size_t>(station - casing.core_nodes.begin());
+        point.station = true;
+        std::tie(point.casing_lateral_y, point.casing_lateral_z) = lateral(casing.nodes[s]);
+        const element::CasingContact& link = *casing.contacts[s];
+        // link_force() is the link's internal force at the core node; the casing pushes the
+        // core the other way
+        point.bearing_force_y = -link.link_force()[1];
+        point.bearing_force_z = -link.link_force()[2];
+        point.mortar_damage = link.max_mortar_damage();
+      }
+    }
+    nodes.push_back(point);
+  }
+  return nodes;
+}
+
 CyclicTestResult CyclicTest::result() const {
   CyclicTestResult result = result_;
+  const int last_step = result.steps.back().step;
+  if (shape_steps_ && (result.shapes.empty() || result.shapes.back().step != last_step)) {
+    const std::vector<BraceShapeNode> nodes = shape(last_step);
+    result.shapes.insert(result.shapes.end(), nodes.begin(), nodes.end());
+  }
   result.completed = result.stop_reason.empty();
   result.energy_balance = analysis_.energy();
   result.iterations = analysis_.total_iterations();
@@ -117,8 +171,10 @@ CyclicTestResult CyclicTest::result() const {
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude, NewtonSettings settings,
-                                 bool record_history) {
+                                 bool record_history, std::optional<std::vector<int>> shape_steps) {
   CyclicTest test(brace, settings, record_history);
+  if (shape_steps)
+    test.record_shapes_at(std::move(*shape_steps));
   if (deformation.size() > 1)
     test.follow(deformation.subspan(1), std::span<const int>(cycle).subspan(1), cycle_amplitude);
   CyclicTestResult result = test.result();

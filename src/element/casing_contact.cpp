@@ -320,6 +320,19 @@ ElementEnergy CasingContact::energy() const {
   return energy;
 }
 
+void CasingContact::mark_path_point() {
+  for (std::size_t face = 0; face < path_damage_.size(); ++face)
+    path_damage_[face] = trial_.faces[face].damage;
+}
+
+bool CasingContact::jumped_past_peak() const {
+  for (std::size_t face = 0; face < path_damage_.size(); ++face) {
+    if (path_damage_[face] < kPathIntactDamage && trial_.faces[face].damage > kPathCrushedDamage)
+      return true;
+  }
+  return false;
+}
+
 double CasingContact::max_mortar_damage() const {
   double worst = 0.0;
   for (const auto& face : trial_.faces)

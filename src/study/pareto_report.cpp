@@ -272,7 +272,8 @@ std::string pareto_markdown(const std::vector<CaseOutcome>& outcomes,
       << "- vs `brb solid`: the cycle energy error (as above) against the case's committed run "
          "of the 3D continuum model (issue 6), where its matrix names one (\"solid\"), on the "
          "cycles of the case's protocol (the 3D run's protocol begins with them); n/a: no 3D "
-         "run; -: the setting did not complete or the cycles' amplitudes differ by more than "
+         "run; -: the setting did not complete, the 3D run has fewer cycles than the setting, or "
+         "the cycles' amplitudes differ by more than "
       << percent(kSolidAmplitudeTolerance) << " (`solid_error` in the CSV).\n"
       << "- Contact (gap-link) spacing follows the core elements (one link per core station); "
          "the step is max_step (dy) for components, dt for frames.\n\n";

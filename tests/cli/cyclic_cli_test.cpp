@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -367,6 +368,72 @@ TEST(CyclicCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
               1e-9 * previous[2]);
   EXPECT_GT(previous[2], 0.0);
   EXPECT_NE(run.out.find("element_history.csv"), std::string::npos) << run.out;
+}
+
+TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
+  // The source's small BRB (examples/braces/thesis_small_brb.json: a 10 x 10 mm core, 100 mm
+  // long, 10 elements, in a mortar casing with a 0.05 mm gap), one cycle at 1 dy and one at
+  // 3 dy in quarter-dy steps: step 52 is the 3 dy compression peak, where the core buckles
+  // inside the gap and bears on the mortar.
+  const ScratchDirectory scratch;
+  const fs::path brace = fs::path(BRB_SOURCE_DIR) / "examples/braces/thesis_small_brb.json";
+  const auto protocol = scratch.write(
+      "protocol.json", json{{"units", "dy"},
+                            {"cycles", json::array({json{{"amplitude", 1.0}, {"cycles", 1}},
+                                                    json{{"amplitude", 3.0}, {"cycles", 1}}})},
+                            {"max_step", 0.25}}
+                           .dump());
+  const auto output = scratch.path() / "results";
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output, "--shape-steps 52,0"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  EXPECT_NE(run.out.find("shape.csv"), std::string::npos) << run.out;
+  const std::vector<HysteresisRow> hysteresis = read_hysteresis(output / "hysteresis.csv");
+  ASSERT_EQ(hysteresis.size(), 65u); // 16 + 48 steps and the initial state
+  ASSERT_LT(hysteresis[52].deformation, 0.0);
+  const std::vector<std::string> lines = lines_of(read_file(output / "shape.csv"));
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.front(), "step,node,position,lateral_y,lateral_z,station,casing_lateral_y,"
+                           "casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage");
+  constexpr std::size_t kNodes = 11; // 10 core elements, no end zones
+  // the asked steps in order, then the last converged one (64)
+  ASSERT_EQ(lines.size(), 1 + 3 * kNodes);
+  const double gap = 0.05; // mm, the brace file's
+  const json summary = json::parse(read_file(output / "summary.json"));
+  int bearing_stations = 0;
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const std::vector<double> row = numbers_of(lines[k]);
+    ASSERT_EQ(row.size(), 11u) << lines[k];
+    const std::size_t block = (k - 1) / kNodes, node = (k - 1) % kNodes;
+    EXPECT_EQ(row[0], (std::array{0.0, 52.0, 64.0}[block])) << lines[k];
+    EXPECT_EQ(row[1], static_cast<double>(node)) << lines[k];
+    // Reference (geometry): stations every 10 mm along the 100 mm core, all in the casing.
+    EXPECT_NEAR(row[2], 10.0 * static_cast<double>(node), 1e-9) << lines[k];
+    EXPECT_EQ(row[5], 1.0) << lines[k];
+    if (block == 0) { // the unloaded initial state: nothing has moved, nothing bears
+      for (const std::size_t column : {3u, 4u, 6u, 7u, 8u, 9u, 10u})
+        EXPECT_EQ(row[column], 0.0) << "column " << column << ": " << lines[k];
+    }
+    // no node moves further than the summary's running maximum
+    EXPECT_LE(std::hypot(row[3], row[4]),
+              summary.at("element").at("max_core_lateral_displacement").get<double>() + 1e-9);
+    // The mortar bears where the core has crossed the gap, pushing it back (the force on the
+    // core opposes its motion relative to the casing).
+    const double relative_y = row[3] - row[6];
+    if (block == 1 && std::abs(relative_y) > gap) {
+      EXPECT_LT(row[8] * relative_y, 0.0) << lines[k];
+      ++bearing_stations;
+    }
+    EXPECT_GE(row[10], 0.0);
+    EXPECT_LE(row[10], 1.0);
+  }
+  EXPECT_GT(bearing_stations, 0) << "the core does not reach the mortar at 3 dy compression";
+
+  // a negative step is a usage error, and nothing is written
+  const auto refused = scratch.path() / "refused";
+  const CliRun bad = run_brb(cyclic_arguments(brace, protocol, refused, "--shape-steps 3,-1"));
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("--shape-steps"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(refused));
 }
 
 TEST(CyclicCli, TrussFidelityFollowsTheClosedFormBarLaw) {

@@ -122,6 +122,40 @@ TEST(CasingContact, BearingCrushesAtTheMortarStrengthOnThatFaceOnly) {
   EXPECT_NEAR(opposite, parameters.bearing_area_y * 17520.0 / 10.0 * 0.01, 1e-6);
 }
 
+TEST(CasingContact, ACrushReachedWithoutAPathPointNearThePeakIsAJumpPastIt) {
+  // Path control (Element::jumped_past_peak): depth 10 mm crushes at fc / E x depth =
+  // 0.023 mm of penetration and the damage grows continuously from 0 there (MortarUniaxial).
+  // A face intact at the last path point and crushed now jumped past its peak; a path that
+  // visits a point near the peak did not.
+  const auto parameters = small_brb_contact();
+  const double crushing_penetration = 39.92 / 17520.0 * 10.0;
+  const double gap = parameters.gap_y;
+  std::string failure;
+  {
+    Probe probe(parameters);
+    probe.contact.mark_path_point(); // the unloaded, intact link
+    probe.nodes[0].position = {0.0, gap + 10.0 * crushing_penetration, 0.0};
+    ASSERT_TRUE(probe.contact.evaluate(probe.nodes, probe.force, probe.tangent, failure));
+    ASSERT_GT(probe.contact.max_mortar_damage(), CasingContact::kPathCrushedDamage);
+    EXPECT_TRUE(probe.contact.jumped_past_peak());
+    // a penetration short of the peak from the same path point: no jump
+    probe.nodes[0].position = {0.0, gap + 0.5 * crushing_penetration, 0.0};
+    ASSERT_TRUE(probe.contact.evaluate(probe.nodes, probe.force, probe.tangent, failure));
+    EXPECT_FALSE(probe.contact.jumped_past_peak());
+  }
+  {
+    // the same crush followed in small steps, each a path point: the state just past the
+    // peak is on the path, so the crush that follows it is not a jump
+    Probe probe(parameters);
+    for (int i = 1; i <= 40; ++i) {
+      probe.contact.mark_path_point();
+      probe.move_core({0.0, gap + 0.05 * i * 2.0 * crushing_penetration, 0.0});
+      EXPECT_FALSE(probe.contact.jumped_past_peak()) << "step " << i;
+    }
+    EXPECT_GT(probe.contact.max_mortar_damage(), CasingContact::kPathCrushedDamage);
+  }
+}
+
 TEST(CasingContact, AxialFrictionIsBoundedByCoulomb) {
   // Reference: Coulomb's law, |T| <= kappa N, with equality while sliding.
   const auto parameters = small_brb_contact(100.0);

@@ -35,6 +35,25 @@ struct ElementHistoryPoint {
   BraceIndicators indicators;     ///< up to and including this step
 };
 
+/// One node of the brace's deformed shape after a step (`brb cyclic --shape-steps`): where
+/// the core buckles inside the gap, how the casing follows, where the mortar bears and is
+/// crushed. Lateral components are along the brace's section axes y and z.
+struct BraceShapeNode {
+  int step = 0;
+  int node = 0;                ///< index along the brace, 0 at the start node
+  double position = 0;         ///< mm along the brace axis from the start node, initial
+  double lateral_y = 0;        ///< mm, the node's displacement along section y
+  double lateral_z = 0;        ///< mm, along section z
+  bool station = false;        ///< a casing station (the columns below are 0 elsewhere)
+  double casing_lateral_y = 0; ///< mm, the casing node's displacement along y
+  double casing_lateral_z = 0; ///< mm, along z
+  double bearing_force_y = 0;  ///< N, the casing's force on the core along y (mortar
+                               ///< bearing and unbonding layer): opposes the core's motion
+                               ///< relative to the casing
+  double bearing_force_z = 0;  ///< N, along z
+  double mortar_damage = 0;    ///< largest bearing damage of the link's faces, 0 to 1
+};
+
 struct CycleMetrics {
   int index = 0;                ///< 1-based
   double amplitude = 0.0;       ///< mm (from the protocol)
@@ -61,6 +80,9 @@ struct CyclicTestResult {
   int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
   BraceIndicators indicators;
   std::vector<ElementHistoryPoint> history; ///< one per step, when asked for
+  /// The deformed shape after each asked step and after the last converged one, when shapes
+  /// were asked for (CyclicTest::record_shapes_at), step by step.
+  std::vector<BraceShapeNode> shapes;
 };
 
 /// Folds converged steps into a CyclicTestResult's hysteresis: the step list, the work of the
@@ -102,6 +124,14 @@ public:
   bool follow(std::span<const double> deformation, std::span<const int> cycle,
               std::span<const double> cycle_amplitude);
 
+  /// Records the brace's deformed shape (BraceShapeNode) after each of these steps (step
+  /// numbers as in CyclicStep; step 0: the initial state) and, in result(), after the last
+  /// converged step. Call before follow().
+  void record_shapes_at(std::vector<int> steps);
+
+  /// The deformed shape after the last converged step, labelled with `step`.
+  std::vector<BraceShapeNode> shape(int step) const;
+
   /// Indicators of the brace up to the last converged step.
   const BraceIndicators& indicators() const { return tracker_.indicators(); }
   /// The result so far (solver statistics and energy balance up to the last step).
@@ -114,6 +144,7 @@ private:
   StaticAnalysis analysis_;
   BraceIndicatorTracker tracker_;
   bool record_history_ = false;
+  std::optional<std::vector<int>> shape_steps_;      ///< sorted; set by record_shapes_at
   std::optional<std::pair<int, int>> yielding_ends_; ///< for the mean core strain
   CyclicTestResult result_;
   HysteresisAccumulator hysteresis_{result_};
@@ -122,10 +153,11 @@ private:
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
 /// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
 /// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
-/// and the fallback algorithm) and says why.
+/// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at.
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,
-                                 NewtonSettings settings = {}, bool record_history = false);
+                                 NewtonSettings settings = {}, bool record_history = false,
+                                 std::optional<std::vector<int>> shape_steps = std::nullopt);
 
 } // namespace brb::analysis

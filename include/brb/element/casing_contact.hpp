@@ -109,6 +109,16 @@ public:
   }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
+  /// Path control (Element::mark_path_point): the faces' damage at the last path point.
+  void mark_path_point() override;
+  /// A face intact at the last path point (damage below kPathIntactDamage) is crushed now
+  /// (damage above kPathCrushedDamage): its bearing went from below its peak force to far
+  /// past it with no point in between (the mortar's damage grows continuously from 0 at the
+  /// peak, MortarUniaxial).
+  bool jumped_past_peak() const override;
+  static constexpr double kPathIntactDamage = 0.05;
+  static constexpr double kPathCrushedDamage = 0.5;
+
   /// Largest mortar damage over the four faces (trial state).
   double max_mortar_damage() const;
   /// Whether any face is in contact (trial state).
@@ -155,6 +165,7 @@ private:
   material::PenaltyFriction friction_;
   State committed_;
   State trial_;
+  std::array<double, 4> path_damage_{}; ///< faces' damage at the last path point
   Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;

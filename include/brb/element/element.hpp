@@ -56,6 +56,17 @@ public:
   /// Energies of the last evaluated state.
   virtual ElementEnergy energy() const = 0;
 
+  /// Path control of softening laws (NewtonSettings::max_correction_ratio): remember the
+  /// last evaluated state as the last point of the followed path.
+  virtual void mark_path_point() {}
+  /// Whether the last evaluated state has gone past a softening law's peak since
+  /// mark_path_point() without a point of the path near the peak: e.g. a bearing link whose
+  /// mortar was intact at the last path point and is crushed now. A converged state like
+  /// that is another equilibrium branch (the crushed one exists for any load) that Newton
+  /// reached by overshooting, not the path: the path must pass the peak force, which steps
+  /// short enough visit.
+  virtual bool jumped_past_peak() const { return false; }
+
   /// Takes over the whole state (committed and trial) of `other`, an element of the same
   /// type built from the same data (a twin). A macro element that solves an internal model
   /// keeps a twin of it as its committed state (BRBElement), because the substeps of its

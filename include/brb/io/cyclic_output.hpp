@@ -1,7 +1,7 @@
 // The result files of a virtual cyclic test (README "brb cyclic"): hysteresis.csv,
-// summary.json and, when asked, element_history.csv. `brb cyclic` and `brb validate` write the same
-// files from these builders, so their columns and keys are documented (and can change) in one
-// place.
+// summary.json and, when asked, element_history.csv and shape.csv. `brb cyclic` and `brb validate`
+// write the same files from these builders, so their columns and keys are documented (and can
+// change) in one place.
 #pragma once
 
 #include "brb/analysis/cyclic_test.hpp"
@@ -30,5 +30,10 @@ nlohmann::ordered_json cyclic_summary_json(const std::string& brace_name, double
 /// run_cyclic_test was asked to): step, core strain, dissipated energy, the running maxima of
 /// the brace indicators and its flags as 0/1 (README keys).
 NumericTable element_history_table(const analysis::CyclicTestResult& result);
+
+/// shape.csv: the brace's deformed shape after the asked steps (result.shapes, recorded with
+/// `--shape-steps`): step, node, position, lateral_y, lateral_z, station, casing_lateral_y,
+/// casing_lateral_z, bearing_force_y, bearing_force_z, mortar_damage (README "brb cyclic").
+NumericTable brace_shape_table(const analysis::CyclicTestResult& result);
 
 } // namespace brb::io
