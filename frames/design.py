@@ -198,6 +198,16 @@ PHI_BRB = 0.9
 BETA = 1.15  # compression adjustment assumed (AISC 341 qualification tests: 1.05 to 1.2)
 YIELDING_FRACTION = 0.65  # yielding length / work-point length
 TRANSITION_LENGTH = 150.0  # mm, each end
+# The transition is inserted into the casing over its whole length (the casing overlaps it),
+# so that the core cannot hinge where it leaves the casing: without the overlap the chain of a
+# casing between two long end zones has a hinge mechanism there (validation/aisc/README.md,
+# "brbf3"; real BRBs insert the stiffened end into the restrainer, Takeuchi & Wada 2018).
+CASING_OVERLAP = TRANSITION_LENGTH
+# Brace ends: gusset connections welded or bolted to the beam-column joints. In a frame model a
+# `brb` element shares all six DOF of its work-point nodes (README "Frame model files"); the
+# brace file says "fixed" so that a stand-alone test of it (`brb cyclic`, `brb check`) has the
+# same end conditions.
+BRACE_ENDS = "fixed"
 PLATE_THICKNESSES = [12.0, 16.0, 20.0, 25.0, 30.0, 40.0, 50.0]  # mm
 GAP = 1.0  # mm per side, both directions
 FRICTION = 0.1  # BRB_SOURCE_FACTS section 4
@@ -245,7 +255,8 @@ def cruciform_depth(area, width, thickness):
 
 
 def casing_tube(core_width, core_thickness, euler_required, length):
-    """The lightest square HSS (mm) that leaves MORTAR_COVER around the core + gaps, has a
+    """The lightest square HSS (mm) that leaves MORTAR_COVER around what it holds (the core,
+    and the transition where the casing overlaps it: pass the largest extent) + gaps, has a
     width-to-wall ratio <= 35 and an Euler load (tube steel only, mortar neglected: cracked,
     pinned over the whole work-point length) >= euler_required."""
     best = None
@@ -287,7 +298,8 @@ def design_brace(name, force_required, length, height, cos_theta):
     conn_width = ceil_to(1.5 * width, 5.0)
     conn_depth = cruciform_depth(1.5 * pmax / FYSC, conn_width, thickness)
     connection = (length - yielding - 2.0 * TRANSITION_LENGTH) / 2.0
-    tube = casing_tube(width, thickness, CASING_SAFETY * pmax, length)
+    held_width = max(width, trans_width, trans_depth) if CASING_OVERLAP > 0.0 else width
+    tube = casing_tube(held_width, thickness, CASING_SAFETY * pmax, length)
     brace_file = {
         "name": name,
         "units": "mm",
@@ -303,7 +315,7 @@ def design_brace(name, force_required, length, height, cos_theta):
         "connection": {"length": connection,
                        "section": {"shape": "cruciform", "width": conn_width,
                                    "depth": conn_depth, "thickness": thickness}},
-        "ends": "pinned",
+        "ends": BRACE_ENDS,
         "casing": {
             "tube": {"shape": "rectangular_tube", "width": tube["outer"],
                      "depth": tube["outer"], "wall": tube["wall"]},
@@ -311,6 +323,7 @@ def design_brace(name, force_required, length, height, cos_theta):
             "mortar": MORTAR,
             "gap": GAP,
             "friction": FRICTION,
+            "overlap": CASING_OVERLAP,
         },
     }
     return {

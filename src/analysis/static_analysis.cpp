@@ -523,7 +523,17 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
     const std::vector<NodeConfiguration> predicted = trial_;
     attempt = newton(to, nullptr, settings_.max_iterations);
-    landed_far = attempt.converged && (!lands_near_predictor(predicted) || jumped_past_peak());
+    landed_far = attempt.converged && !lands_near_predictor(predicted);
+    if (attempt.converged && jumped_past_peak()) {
+      // Crushed from intact within the substep: another branch (jumped_past_peak). Cut;
+      // at the floor the state is not the path either, so the step is treated as failed
+      // and passed by the continuation, which follows the crush if the flow pushes it.
+      landed_far = true;
+      if (depth >= settings_.max_halvings) {
+        attempt.converged = false;
+        attempt.failure = "a contact link crushed from intact within the smallest substep";
+      }
+    }
   }
   report.iterations += attempt.iterations;
   const bool at_floor = depth >= settings_.max_halvings;

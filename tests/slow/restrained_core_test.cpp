@@ -193,5 +193,27 @@ TEST(RestrainedCore, NewtonDoesNotCrushTheBearingMortarByOvershootingItsPeak) {
   EXPECT_FALSE(run.result.indicators.global_buckling);
 }
 
+TEST(RestrainedCore, EvenAtTheSmallestSubstepACrushFromIntactIsNotThePath) {
+  // The story-1 brace of frames/brbf3 as designed (plate 145 x 16 mm, 16 core elements, its
+  // transitions inside a 250 x 8 mm tube, fixed ends), two cycles at 1 dy in steps of dy / 10:
+  // the start of its K3.4c check. With the path control at every substep but the smallest,
+  // Newton at the substep floor still converged, early in the second compression (-33 kN),
+  // onto a state with the casing 48 mm aside and twelve stations crushed, and the brace
+  // carried -42 kN to the end of the cycle. At the floor such a state is now a failed
+  // substep, passed by the continuation, which follows the path.
+  // Reference (theory): a restrained core holds about P_y = fy A = 608 kN at 1 dy.
+  const model::BraceSpec spec =
+      io::read_brace(BRB_SOURCE_DIR "/frames/brbf3/braces/brbf3_story1.json");
+  const RestrainedRun run = run_cycles(spec, {1.0, 1.0}, 10.0);
+  ASSERT_TRUE(run.result.completed) << run.result.stop_reason;
+  ASSERT_EQ(run.result.cycles.size(), 2u);
+  for (const CycleMetrics& cycle : run.result.cycles) {
+    EXPECT_LT(cycle.max_compression, -0.9 * run.brace.yield_force) << "cycle " << cycle.index;
+  }
+  EXPECT_LT(run.result.indicators.max_mortar_damage, element::CasingContact::kPathIntactDamage);
+  EXPECT_FALSE(run.result.indicators.casing_failure);
+  EXPECT_FALSE(run.result.indicators.global_buckling);
+}
+
 } // namespace
 } // namespace brb::analysis

@@ -85,7 +85,9 @@ struct NewtonSettings {
   /// through; steps of dy / 13 and dy / 20 follow the path and crush nothing. Smooth steps
   /// corrected by up to 4.6 times their prediction there; with 5 the run crushes nothing at
   /// steps of dy / 5, 7, 10, 13 and 20 (with 10 it still did at dy / 7, with 3 it took four
-  /// times the substeps).
+  /// times the substeps). The same control cuts a substep, and retries shorter a pseudo-time
+  /// step of a jump, in which an element went past a softening peak with no path point near
+  /// it (Element::jumped_past_peak: a bearing link crushed from intact).
   double max_correction_ratio = 5.0;
   static constexpr double kEnergyGuard = 1e-2;
   int energy_halvings = 10;
