@@ -627,8 +627,8 @@ bool StaticAnalysis::jumped_past_peak() const {
   // second cycle at 1 dy): Newton reached states in which one to five stations had the core
   // 20 to 40 mm deep in crushed mortar, an equilibrium because crushed mortar bears nothing,
   // and the brace dropped from -413 to -150 kN; crushing a station takes its bearing peak,
-  // about 1.1 MN, while no converged state of the same run with mortar ten times stronger
-  // (no crushing possible) bore more than 2.3 kN at any station.
+  // fc over 244 x 105 mm, about 1.3 MN, while no converged state of the same run with mortar ten
+  // times stronger (no crushing possible) bore more than 2.3 kN at any station.
   for (const auto& element : model_.elements()) {
     if (element->jumped_past_peak())
       return true;
