@@ -278,13 +278,13 @@ private:
   /// (step.work - change) stays within `tolerance` times the gross work with the step.
   bool within_budget(double committed_error, double change, double tolerance,
                      const StepEnergy& step) const;
-  /// Whether a converged step dissipates no more than its work supplies (the second test of
-  /// the far-branch control).
-  /// Path control of softening laws (part of the far-branch control): marks every
+  /// Path control of softening laws (the third test of the far-branch control): marks every
   /// element's last evaluated state as the last path point; whether some element has since
   /// gone past a softening peak without a path point near it (Element::jumped_past_peak).
   void mark_path_point();
   bool jumped_past_peak() const;
+  /// Whether a converged step dissipates no more than its work supplies (the second test of
+  /// the far-branch control).
   bool dissipation_supplied_by_work(const StepEnergy& step) const;
   void commit(double control, const StepEnergy& step);
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
