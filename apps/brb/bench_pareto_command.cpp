@@ -51,6 +51,8 @@ std::string command_line(const BenchParetoCommand& command, bool matrices_given,
   line += " --jobs " + std::to_string(command.jobs);
   if (command.quick)
     line += " --quick";
+  if (command.run_committed)
+    line += " --run-committed";
   return line;
 }
 
@@ -94,6 +96,9 @@ CLI::App* add_bench_pareto_command(CLI::App& bench, BenchParetoCommand& command)
   pareto->add_flag("--quick", command.quick,
                    "One run per setting over each matrix's shortened window or protocol "
                    "(\"quick\"): a smoke test, not the study");
+  pareto->add_flag("--run-committed", command.run_committed,
+                   "Run the settings that name a committed run (\"committed_run\", a brb frame "
+                   "summary.json) instead of reading it");
   return pareto;
 }
 
@@ -112,6 +117,7 @@ int run_bench_pareto_command(const BenchParetoCommand& command, std::ostream& re
   study::ParetoRunOptions options;
   options.jobs = command.jobs;
   options.repeats = command.repeats;
+  options.run_committed = command.run_committed;
   options.progress = [&](const std::string& line) {
     const std::lock_guard<std::mutex> guard(lock);
     notes << "brb bench pareto: " << line << std::endl;
@@ -136,6 +142,7 @@ int run_bench_pareto_command(const BenchParetoCommand& command, std::ostream& re
   description.jobs = command.jobs;
   description.repeats = command.repeats;
   description.quick = command.quick;
+  description.run_committed = command.run_committed;
   fs::create_directory(command.output_directory);
   study::write_pareto_outputs(command.output_directory, outcomes, description);
 

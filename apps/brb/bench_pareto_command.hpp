@@ -17,6 +17,8 @@ struct BenchParetoCommand {
   std::optional<int> repeats;                       ///< overrides the matrices' repeats
   int jobs = 1;
   bool quick = false;
+  /// run the settings that name a committed run instead of reading it
+  bool run_committed = false;
 };
 
 /// Registers `pareto` under the parent subcommand `bench`.

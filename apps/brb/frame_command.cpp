@@ -97,6 +97,11 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
       ->add_option("--duration", command.duration, "Analyse only the first S seconds of the record")
       ->type_name("S");
   frame
+      ->add_option("--step", command.step,
+                   "Analysis time step, s, instead of the model's analysis.dt (default: that, "
+                   "or the record's step when the model gives none)")
+      ->type_name("S");
+  frame
       ->add_option("--braces", command.braces,
                    "Build every brace as: elastic (an elastic truss of its axial stiffness), "
                    "truss, full or auto, instead of the fidelity the model file gives")
@@ -122,7 +127,11 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
     throw io::InputError("command line", "--scale", "must be a finite number other than 0");
   if (command.duration && !(*command.duration > 0.0))
     throw io::InputError("command line", "--duration", "must be > 0 s");
+  if (command.step && !(std::isfinite(*command.step) && *command.step > 0.0))
+    throw io::InputError("command line", "--step", "must be a finite time step > 0 s");
   frame::FrameRunOptions options = frame::run_options_of(spec);
+  if (command.step)
+    options.dt = *command.step;
   std::vector<analysis::GroundAcceleration> components;
   const io::GroundMotion motion = read_motion(command.motion, command);
   components.push_back(component_of(motion, options.directions.front(), command.duration));

@@ -22,6 +22,9 @@ struct FrameCommand {
   std::optional<std::string> units; ///< g, m/s^2, mm/s^2 (AT2: from the header by default)
   std::optional<double> record_dt;  ///< s, for single-column records
   std::optional<double> duration;   ///< s, analyse only the first part of the record
+  /// s, the analysis time step instead of the model's analysis.dt (a step-size study, or a
+  /// reference run at the step of `brb bench pareto`'s settings)
+  std::optional<double> step;
   /// Overrides every brace's fidelity: elastic, truss, full or auto.
   std::optional<std::string> braces;
   std::filesystem::path output_directory;

@@ -55,9 +55,9 @@ SettingFidelity fidelity_named(const JsonValue& value) {
   throw value.error("fidelity must be \"truss\", \"full\" or \"auto\" (got \"" + text + "\")");
 }
 
-ParetoSetting read_setting(const JsonValue& entry, CaseKind kind) {
+ParetoSetting read_setting(const JsonValue& entry, CaseKind kind, const fs::path& folder) {
   entry.expect_object({"label", "fidelity", "core_elements", "fibers", "integration_points", "mode",
-                       "max_step", "dt", "repeats"},
+                       "max_step", "dt", "repeats", "committed_run"},
                       "a setting: {\"label\": ..., \"fidelity\": ..., ...}");
   ParetoSetting setting;
   const JsonValue label = entry.at("label", "the setting's label (unique in the matrix)");
@@ -99,6 +99,13 @@ ParetoSetting read_setting(const JsonValue& entry, CaseKind kind) {
   }
   if (const auto value = entry.find("repeats"))
     setting.repeats = whole_number(*value, "repeats", 1, kMaxRepeats);
+  if (const auto value = entry.find("committed_run")) {
+    if (kind != CaseKind::frame)
+      throw value->error("committed_run (a brb frame run's summary.json) applies to frame cases "
+                         "only");
+    setting.committed_run =
+        existing_file(*value, "summary.json of a committed brb frame run", folder);
+  }
   return setting;
 }
 
@@ -123,8 +130,10 @@ ParetoCase ParetoCase::quick() const {
   if (quick_protocol)
     shortened.protocol = *quick_protocol;
   shortened.repeats = 1;
-  for (ParetoSetting& setting : shortened.settings)
+  for (ParetoSetting& setting : shortened.settings) {
     setting.repeats.reset();
+    setting.committed_run.reset(); // a run of the whole window: the quick one is run
+  }
   return shortened;
 }
 
@@ -243,7 +252,7 @@ ParetoCase read_pareto_matrix(const fs::path& file) {
   std::set<std::string> labels;
   for (std::size_t k = 0; k < count; ++k) {
     const JsonValue entry = settings.element(k);
-    ParetoSetting setting = read_setting(entry, study_case.kind);
+    ParetoSetting setting = read_setting(entry, study_case.kind, folder);
     if (!labels.insert(setting.label).second)
       throw entry.error("duplicate setting label \"" + setting.label +
                         "\": each setting needs a unique label");

@@ -155,7 +155,8 @@ void case_section(std::ostream& out, const CaseOutcome& outcome) {
     else
       out << optional_int(s.setting.integration_points) << " | ";
     out << step_text(s.setting) << " | " << (s.ran ? time_text(s.median_time) : "-") << " | "
-        << s.wall_times.size() << " | " << (s.ran ? fixed(speed_up(outcome, s), 4) : "-") << " | ";
+        << (s.committed ? std::string("committed") : std::to_string(s.wall_times.size())) << " | "
+        << (s.ran ? fixed(speed_up(outcome, s), 4) : "-") << " | ";
     if (frame) {
       out << percent(s.errors.peak_drift) << " | " << percent(s.errors.residual_drift) << " | "
           << percent(s.errors.cid) << " | ";
@@ -168,6 +169,18 @@ void case_section(std::ostream& out, const CaseOutcome& outcome) {
         << " | " << status_of(s) << " |\n";
   }
   out << "\n";
+  bool any_committed = false;
+  for (const SettingOutcome& s : outcome.settings) {
+    if (s.committed && s.setting.committed_run) {
+      any_committed = true;
+      out << "- `" << s.setting.label << "`: read from its committed run `"
+          << s.setting.committed_run->lexically_normal().string()
+          << "` (a `brb frame` run of this setting; the time is the one it recorded), not run "
+             "again (`--run-committed` runs it)\n";
+    }
+  }
+  if (any_committed)
+    out << "\n";
 }
 
 void auto_section(std::ostream& out, const std::vector<CaseOutcome>& outcomes) {
@@ -215,7 +228,7 @@ std::string pareto_csv(const std::vector<CaseOutcome>& outcomes) {
   out << "case,kind,setting,reference,fidelity,built_as,core_elements,fibers,integration_points,"
          "mode,max_step_dy,dt_s,runs,median_time_s,wall_times_s,speed_up,cycle_energy_error,"
          "peak_force_error,beta_error,peak_drift_error,residual_drift_error,cid_error,"
-         "solid_error,primary_error,worst_error,front_primary,front_worst,status\n";
+         "solid_error,primary_error,worst_error,front_primary,front_worst,status,committed\n";
   for (const CaseOutcome& outcome : outcomes) {
     for (std::size_t k = 0; k < outcome.settings.size(); ++k) {
       const SettingOutcome& s = outcome.settings[k];
@@ -240,7 +253,8 @@ std::string pareto_csv(const std::vector<CaseOutcome>& outcomes) {
           << csv_number(s.errors.residual_drift) << "," << csv_number(s.errors.cid) << ","
           << csv_number(s.errors.solid) << "," << csv_number(s.errors.primary()) << ","
           << csv_number(s.errors.worst()) << "," << (s.front_primary ? 1 : 0) << ","
-          << (s.front_worst ? 1 : 0) << "," << csv_field(status_of(s)) << "\n";
+          << (s.front_worst ? 1 : 0) << "," << csv_field(status_of(s)) << ","
+          << (s.committed ? 1 : 0) << "\n";
     }
   }
   return out.str();
@@ -257,7 +271,9 @@ std::string pareto_markdown(const std::vector<CaseOutcome>& outcomes,
                               : "the number of times its matrix says (column runs)")
       << " on " << description.jobs
       << " thread(s); time = median wall time of the runs (model build + analysis), on a "
-         "shared 2-core machine: ratios carry over, absolute times do not."
+         "shared 2-core machine: ratios carry over, absolute times do not. Runs "
+         "\"committed\": the setting's committed `brb frame` run was read, with the wall time "
+         "it recorded."
       << (description.quick ? " **--quick**: shortened windows, one run each." : "") << "\n"
       << "- Errors are against the case's reference, the finest `full` setting of its matrix "
          "(relative; definitions in `include/brb/study/pareto_metrics.hpp`). Components: "

@@ -4,6 +4,7 @@
 #include "brb/frame/frame_builder.hpp"
 #include "brb/frame/frame_run.hpp"
 #include "brb/io/brace_input.hpp"
+#include "brb/io/csv.hpp"
 #include "brb/io/frame_input.hpp"
 #include "brb/io/ground_motion.hpp"
 #include "brb/io/json_input.hpp"
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -37,6 +39,13 @@ struct CaseInputs {
   model::FrameSpec frame;              ///< frame
   analysis::GroundAcceleration ground; ///< frame: the window of the record
 };
+
+/// The analysis step of a frame case without a setting's dt: the model's analysis.dt, or the
+/// record's step when the model gives none (as `brb frame`).
+double analysis_step(const CaseInputs& inputs) {
+  const double model_step = frame::run_options_of(inputs.frame).dt;
+  return model_step > 0.0 ? model_step : inputs.ground.dt;
+}
 
 /// One run's result.
 struct RunResult {
@@ -114,10 +123,7 @@ RunResult run_frame(const ParetoCase& study_case, const CaseInputs& inputs,
   }
   frame::FrameRunOptions options = frame::run_options_of(spec);
   options.recorders = frame::RecorderRequest{false, false, false, false, {}};
-  if (setting.dt)
-    options.dt = *setting.dt;
-  if (!(options.dt > 0.0))
-    options.dt = inputs.ground.dt;
+  options.dt = setting.dt.value_or(analysis_step(inputs));
   const auto started = Clock::now();
   frame::FrameModel built =
       frame::build_frame(spec, study_case.model.string(), override_of(setting.fidelity));
@@ -165,6 +171,95 @@ SolidReference read_solid_reference(const std::filesystem::path& summary_file) {
          cycle.at("amplitude", "mm").number("cycle amplitude, mm")});
   }
   return reference;
+}
+
+namespace {
+
+/// The last two components of a path ("brbf9/model.json"): what a committed run's model
+/// path, written relative to wherever it ran, must share with the matrix's.
+std::string folder_and_name(const std::filesystem::path& path) {
+  return (path.parent_path().filename() / path.filename()).generic_string();
+}
+
+/// |a - b| within a relative 1e-9 of the larger (numbers written and read back as JSON).
+bool same_number(double a, double b) {
+  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
+
+std::vector<double> numbers_of(const io::JsonValue& array, std::string_view meaning) {
+  std::vector<double> values;
+  const std::size_t count = array.expect_array(100000, meaning);
+  for (std::size_t i = 0; i < count; ++i)
+    values.push_back(array.element(i).number(meaning));
+  return values;
+}
+
+bool boolean_of(const io::JsonValue& value) {
+  if (!value.json().is_boolean())
+    throw value.error("true or false");
+  return value.json().get<bool>();
+}
+
+} // namespace
+
+CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
+                                           const ParetoCase& study_case,
+                                           const ParetoSetting& setting, double dt) {
+  const nlohmann::json document = io::read_json_file(summary_file);
+  const io::JsonValue root(document, summary_file.string());
+  const auto mismatch = [&](const io::JsonValue& value, const std::string& expected) {
+    return value.error("the committed run of setting \"" + setting.label + "\" must be " +
+                       expected + " (got " + io::describe_json_value(value.json()) + ")");
+  };
+  const io::JsonValue model = root.at("model", "the frame model file of the run");
+  if (folder_and_name(model.string("model file")) != folder_and_name(study_case.model))
+    throw mismatch(model, "of the matrix's model, " + folder_and_name(study_case.model));
+  const io::JsonValue motion = root.at("motion", "the ground-motion record of the run");
+  if (std::filesystem::path(motion.string("record file")).filename() !=
+      study_case.motion.filename())
+    throw mismatch(motion, "under the matrix's record, " + study_case.motion.filename().string());
+  const io::JsonValue scale = root.at("scale", "the factor on the record");
+  if (!same_number(scale.number("scale factor"), study_case.scale))
+    throw mismatch(scale, "at the matrix's scale " + io::format_number(study_case.scale));
+  const io::JsonValue duration = root.at("duration", "the window analysed, s");
+  if (!same_number(duration.number("duration, s"), study_case.duration))
+    throw mismatch(duration, "over the matrix's window, " + io::format_number(study_case.duration) +
+                                 " s (brb frame --duration)");
+  const io::JsonValue step = root.at("dt", "the analysis time step, s");
+  if (!same_number(step.number("time step, s"), dt))
+    throw mismatch(step,
+                   "at the setting's step, " + io::format_number(dt) + " s (brb frame --step)");
+
+  CommittedFrameRun run;
+  run.file = summary_file;
+  const io::JsonValue braces = root.at("braces", "the run's braces");
+  const std::size_t count = braces.expect_array(100000, "the run's braces");
+  for (std::size_t b = 0; b < count; ++b) {
+    const io::JsonValue brace = braces.element(b);
+    const io::JsonValue fidelity = brace.at("fidelity", "truss or full");
+    const std::string built = fidelity.string("brace fidelity");
+    if (setting.fidelity != SettingFidelity::automatic && built != to_string(setting.fidelity))
+      throw mismatch(fidelity, "with every brace " + to_string(setting.fidelity) +
+                                   " (brb frame --braces " + to_string(setting.fidelity) + ")");
+    (built == "truss" ? run.response.truss_braces : run.response.full_braces) += 1;
+    run.response.cid.push_back(brace.at("cid", "cumulative inelastic deformation, dy")
+                                   .number("cumulative inelastic deformation, dy"));
+  }
+  run.built_as = std::to_string(run.response.truss_braces) + " truss; " +
+                 std::to_string(run.response.full_braces) + " full";
+  const bool converged = boolean_of(root.at("converged", "whether every step converged"));
+  const bool collapsed = boolean_of(root.at("collapse", "whether the frame collapsed"));
+  run.response.completed = converged && !collapsed;
+  run.response.end_time = root.at("end_time", "s").number("end time, s");
+  run.response.max_drift =
+      numbers_of(root.at("max_drift", "peak story drift ratios"), "peak story drift ratio");
+  run.response.residual_drift = numbers_of(root.at("residual_drift", "residual story drift ratios"),
+                                           "residual story drift ratio");
+  const io::JsonValue stop = root.at("stop_reason", "why the run stopped");
+  if (stop.json().is_string() && stop.json().get<std::string>() != "completed")
+    run.stop_reason = stop.json().get<std::string>();
+  run.wall_time = root.at("wall_time", "the run's wall time, s").number("wall time, s");
+  return run;
 }
 
 namespace {
@@ -239,6 +334,21 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
   std::vector<CaseInputs> inputs;
   for (const ParetoCase& study_case : cases)
     inputs.push_back(read_inputs(study_case));
+  // Committed runs are read now too: a run that does not match its setting stops the study.
+  const auto read_from_file = [&](std::size_t c, std::size_t k) {
+    return cases[c].settings[k].committed_run && !options.run_committed;
+  };
+  std::vector<std::map<std::size_t, CommittedFrameRun>> committed(cases.size());
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    for (std::size_t k = 0; k < cases[c].settings.size(); ++k) {
+      if (!read_from_file(c, k))
+        continue;
+      const ParetoSetting& setting = cases[c].settings[k];
+      const double dt = setting.dt.value_or(analysis_step(inputs[c]));
+      committed[c].emplace(k,
+                           read_committed_frame_run(*setting.committed_run, cases[c], setting, dt));
+    }
+  }
   std::vector<CaseOutcome> outcomes(cases.size());
   // One pool of runs over all cases, costly ones first: frames' full settings before the
   // components', so that the threads finish together.
@@ -253,7 +363,7 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
       if (cases[c].kind != kind)
         continue;
       for (const std::size_t k : run_order(cases[c].settings)) {
-        if (cases[c].settings[k].fidelity != SettingFidelity::full)
+        if (cases[c].settings[k].fidelity != SettingFidelity::full || read_from_file(c, k))
           continue;
         const int repeats =
             options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
@@ -264,7 +374,7 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
   }
   for (std::size_t c = 0; c < cases.size(); ++c) {
     for (const std::size_t k : run_order(cases[c].settings)) {
-      if (cases[c].settings[k].fidelity == SettingFidelity::full)
+      if (cases[c].settings[k].fidelity == SettingFidelity::full || read_from_file(c, k))
         continue;
       const int repeats =
           options.repeats.value_or(cases[c].settings[k].repeats.value_or(cases[c].repeats));
@@ -279,6 +389,15 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
     times[c].resize(cases[c].settings.size());
     first_runs[c].resize(cases[c].settings.size());
     failures[c].resize(cases[c].settings.size());
+    for (const auto& [k, run] : committed[c]) {
+      RunResult result;
+      result.wall_time = run.wall_time;
+      result.built_as = run.built_as;
+      result.frame = run.response;
+      result.stop_reason = run.stop_reason;
+      times[c][k].push_back(run.wall_time);
+      first_runs[c][k] = std::move(result);
+    }
   }
   std::atomic<std::size_t> next{0};
   std::mutex lock;
@@ -338,6 +457,7 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
       setting.setting = study_case.settings[k];
       setting.failure = failures[c][k];
       setting.ran = failures[c][k].empty() && first_runs[c][k].has_value();
+      setting.committed = committed[c].count(k) > 0;
       setting.wall_times = times[c][k];
       setting.median_time = median(times[c][k]);
       if (first_runs[c][k]) {

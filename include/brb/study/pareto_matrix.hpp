@@ -22,8 +22,16 @@
 //       {"label": "truss", "fidelity": "truss"},
 //       {"label": "full-16", "fidelity": "full", "core_elements": 16, "fibers": [4, 16],
 //        "integration_points": 3, "mode": "condensed" /* frames */, "max_step": 0.1 /* dy,
-//        components */, "dt": 0.005 /* s, frames */, "repeats": 1}
+//        components */, "dt": 0.005 /* s, frames */, "repeats": 1,
+//        "committed_run": "reference/brbf9_full16/summary.json" /* frames, optional */}
 //     ] }
+//
+// committed_run (frames): the summary.json of a `brb frame` run of this very setting (the
+// matrix's model, record, scale and window, the setting's dt and fidelity), committed because
+// it costs too long to repeat with every study (a frame with 16-element full braces: an hour
+// and more on the 2-core machine). The study reads its drifts, brace CIDs and wall time
+// instead of running it (`brb bench pareto --run-committed` runs it anyway); the file must
+// agree with the case and the setting (read_committed_frame_run checks it).
 //
 // Contact (gap-link) spacing is not a separate axis: the brace model ties one link to every
 // core station, so it follows `core_elements` (spacing = yielding length / core_elements).
@@ -55,6 +63,8 @@ struct ParetoSetting {
   std::optional<double> max_step;                          ///< dy, components only
   std::optional<double> dt;                                ///< s, frames only
   std::optional<int> repeats;                              ///< overrides the case's
+  /// frames, optional: summary.json of a committed `brb frame` run of this setting (above)
+  std::optional<std::filesystem::path> committed_run;
 
   /// The brace as this setting builds it (core elements, fibers, integration points).
   model::BraceSpec applied_to(model::BraceSpec brace) const;
@@ -80,7 +90,7 @@ struct ParetoCase {
   std::vector<ParetoSetting> settings;
   std::size_t reference = 0; ///< index in settings
 
-  /// The case as --quick runs it: the quick window or protocol, one repeat.
+  /// The case as --quick runs it: the quick window or protocol, one repeat, committed runs run.
   ParetoCase quick() const;
 };
 

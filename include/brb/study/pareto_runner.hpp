@@ -16,8 +16,10 @@ namespace brb::study {
 
 struct SettingOutcome {
   ParetoSetting setting;
-  bool ran = false;    ///< every repeat finished its analysis (it may have stopped early)
-  std::string failure; ///< why a run threw (empty when ran)
+  bool ran = false; ///< every repeat finished its analysis (it may have stopped early)
+  /// read from the setting's committed `brb frame` run (committed_run), not run by this study
+  bool committed = false;
+  std::string failure;            ///< why a run threw (empty when ran)
   std::vector<double> wall_times; ///< s, one per repeat
   double median_time = 0.0;       ///< s
   /// What `auto` (or the setting) built: "truss", "full", or for frames "6 truss; 0 full".
@@ -44,6 +46,24 @@ struct SolidReference {
 /// the field otherwise.
 SolidReference read_solid_reference(const std::filesystem::path& summary_file);
 
+/// A committed `brb frame` run of a frame case's setting (ParetoSetting::committed_run).
+struct CommittedFrameRun {
+  std::filesystem::path file; ///< its summary.json
+  FrameResponse response;
+  double wall_time = 0.0;  ///< s, as the run recorded it (model build + analysis)
+  std::string built_as;    ///< "0 truss; 18 full"
+  std::string stop_reason; ///< empty when it went to its end
+};
+
+/// Reads a `brb frame` summary.json as the run of `setting` of `study_case`, whose analysis
+/// step is `dt` (s). io::InputError naming the file and the field when a field is missing or
+/// the run is not of this case and setting: another model (its folder and file name), record
+/// (file name), scale, window (duration), step, or brace fidelity (a `full` or `truss` setting
+/// needs every brace built so).
+CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
+                                           const ParetoCase& study_case,
+                                           const ParetoSetting& setting, double dt);
+
 struct CaseOutcome {
   ParetoCase study_case;
   std::optional<SolidReference> solid;  ///< component, when the matrix names one
@@ -55,6 +75,8 @@ struct CaseOutcome {
 struct ParetoRunOptions {
   int jobs = 1;               ///< threads (>= 1)
   std::optional<int> repeats; ///< overrides every setting's and case's repeats
+  /// run the settings that name a committed run instead of reading it
+  bool run_committed = false;
   /// Called after each run (from the worker thread, serialised): a line of progress.
   std::function<void(const std::string&)> progress;
 };
