@@ -102,6 +102,11 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
                    "or the record's step when the model gives none)")
       ->type_name("S");
   frame
+      ->add_option("--core-elements", command.core_elements,
+                   "Core elements of every brace instead of its brace file's count (the contact "
+                   "links follow the core stations); for full braces")
+      ->type_name("N");
+  frame
       ->add_option("--braces", command.braces,
                    "Build every brace as: elastic (an elastic truss of its axial stiffness), "
                    "truss, full or auto, instead of the fidelity the model file gives")
@@ -122,13 +127,22 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
 int run_frame_command(const FrameCommand& command, std::ostream& report, std::ostream& notes) {
   const auto started = std::chrono::steady_clock::now();
   // Every input is read and checked before anything is written.
-  const model::FrameSpec spec = io::read_frame(command.model);
+  model::FrameSpec spec = io::read_frame(command.model);
   if (!(std::isfinite(command.scale) && command.scale != 0.0))
     throw io::InputError("command line", "--scale", "must be a finite number other than 0");
   if (command.duration && !(*command.duration > 0.0))
     throw io::InputError("command line", "--duration", "must be > 0 s");
   if (command.step && !(std::isfinite(*command.step) && *command.step > 0.0))
     throw io::InputError("command line", "--step", "must be a finite time step > 0 s");
+  if (command.core_elements && !(*command.core_elements >= 1 && *command.core_elements <= 4096))
+    throw io::InputError("command line", "--core-elements",
+                         "must be a whole number from 1 to 4096");
+  if (command.core_elements) {
+    for (model::FrameElementSpec& element : spec.elements) {
+      if (auto* brace = std::get_if<model::BraceElementSpec>(&element.kind))
+        brace->brace.core_elements = *command.core_elements;
+    }
+  }
   frame::FrameRunOptions options = frame::run_options_of(spec);
   if (command.step)
     options.dt = *command.step;
@@ -176,6 +190,7 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
   description.scale = command.scale;
   description.integrator = integrator_name(options.integrator);
   description.dt = options.dt;
+  description.core_elements = command.core_elements;
   description.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   fs::create_directory(command.output_directory);

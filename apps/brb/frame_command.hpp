@@ -25,6 +25,9 @@ struct FrameCommand {
   /// s, the analysis time step instead of the model's analysis.dt (a step-size study, or a
   /// reference run at the step of `brb bench pareto`'s settings)
   std::optional<double> step;
+  /// Every brace's core element count instead of its brace file's (a mesh study of a frame's
+  /// full braces; the contact links follow the core stations)
+  std::optional<int> core_elements;
   /// Overrides every brace's fidelity: elastic, truss, full or auto.
   std::optional<std::string> braces;
   std::filesystem::path output_directory;

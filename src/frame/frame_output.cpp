@@ -67,6 +67,9 @@ Json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,
   }
   summary["braces"] = braces;
   summary["wall_time"] = description.wall_time;
+  // null: each brace as its file meshes it
+  summary["core_elements"] =
+      description.core_elements ? nlohmann::ordered_json(*description.core_elements) : nullptr;
   summary["units"] = Json{
       {"force", "N"}, {"length", "mm"}, {"time", "s"}, {"energy", "N mm"}, {"acceleration", "g"}};
   return summary;

@@ -47,6 +47,21 @@ double analysis_step(const CaseInputs& inputs) {
   return model_step > 0.0 ? model_step : inputs.ground.dt;
 }
 
+/// The core element count every brace file of a frame gives, or nothing when they differ (or
+/// the frame has no brace).
+std::optional<int> file_core_elements(const model::FrameSpec& frame) {
+  std::optional<int> count;
+  for (const model::FrameElementSpec& element : frame.elements) {
+    const auto* brace = std::get_if<model::BraceElementSpec>(&element.kind);
+    if (!brace)
+      continue;
+    if (count && *count != brace->brace.core_elements)
+      return std::nullopt;
+    count = brace->brace.core_elements;
+  }
+  return count;
+}
+
 /// One run's result.
 struct RunResult {
   double wall_time = 0.0;
@@ -204,7 +219,8 @@ bool boolean_of(const io::JsonValue& value) {
 
 CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
                                            const ParetoCase& study_case,
-                                           const ParetoSetting& setting, double dt) {
+                                           const ParetoSetting& setting, double dt,
+                                           std::optional<int> file_core_elements) {
   const nlohmann::json document = io::read_json_file(summary_file);
   const io::JsonValue root(document, summary_file.string());
   const auto mismatch = [&](const io::JsonValue& value, const std::string& expected) {
@@ -229,6 +245,29 @@ CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_
   if (!same_number(step.number("time step, s"), dt))
     throw mismatch(step,
                    "at the setting's step, " + io::format_number(dt) + " s (brb frame --step)");
+
+  // "core_elements": a number when the run overrode the brace files' count (brb frame
+  // --core-elements); null or absent (runs written before the field) when it did not
+  const std::optional<io::JsonValue> elements = root.find("core_elements");
+  const bool overridden = elements && !elements->json().is_null();
+  const std::optional<int> run_elements =
+      overridden ? std::optional<int>(static_cast<int>(elements->number("core element count")))
+                 : file_core_elements;
+  const std::optional<int> setting_elements =
+      setting.core_elements ? setting.core_elements : file_core_elements;
+  if (!run_elements || run_elements != setting_elements) {
+    const std::string expected =
+        "with every brace of the setting's core element count, " +
+        (setting_elements ? std::to_string(*setting_elements) : std::string("its file's")) +
+        " (brb frame --core-elements; none or null: the brace files', " +
+        (file_core_elements ? std::to_string(*file_core_elements)
+                            : std::string("not all the same")) +
+        ")";
+    if (elements)
+      throw mismatch(*elements, expected);
+    throw root.error("the committed run of setting \"" + setting.label + "\" must be " + expected +
+                     " (it gives no core_elements: the brace files')");
+  }
 
   CommittedFrameRun run;
   run.file = summary_file;
@@ -345,8 +384,8 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
         continue;
       const ParetoSetting& setting = cases[c].settings[k];
       const double dt = setting.dt.value_or(analysis_step(inputs[c]));
-      committed[c].emplace(k,
-                           read_committed_frame_run(*setting.committed_run, cases[c], setting, dt));
+      committed[c].emplace(k, read_committed_frame_run(*setting.committed_run, cases[c], setting,
+                                                       dt, file_core_elements(inputs[c].frame)));
     }
   }
   std::vector<CaseOutcome> outcomes(cases.size());

@@ -315,6 +315,27 @@ TEST(FrameCli, StepOverridesTheModelsTimeStep) {
   EXPECT_NEAR(peak_finer / peak_own, 1.0, 0.05);
 }
 
+TEST(FrameCli, CoreElementsOverrideEveryBracesMeshAndTheSummarySaysSo) {
+  // brbf3's brace files mesh their cores with 16 elements; --core-elements 2 builds the full
+  // braces with 2 (a short elastic window: about a second). The summary records the count, or
+  // null when the files' own were used (the committed runs of brb bench pareto are checked
+  // against it).
+  const ScratchDirectory scratch;
+  const auto coarse = scratch.path() / "coarse";
+  const CliRun run = run_brb(frame_arguments(kFrames / "brbf3" / "model.json", kElCentro, coarse,
+                                             "--duration 0.03 --braces full --core-elements 2"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const json summary = read_json(coarse / "summary.json");
+  EXPECT_EQ(summary.at("core_elements").get<int>(), 2);
+  for (const auto& brace : summary.at("braces"))
+    EXPECT_EQ(brace.at("fidelity").get<std::string>(), "full");
+  const auto own = scratch.path() / "own";
+  const CliRun truss = run_brb(frame_arguments(kFrames / "brbf3" / "model.json", kElCentro, own,
+                                               "--duration 0.03 --braces truss"));
+  ASSERT_EQ(truss.exit_code, 0) << truss.err << truss.out;
+  EXPECT_TRUE(read_json(own / "summary.json").at("core_elements").is_null());
+}
+
 // ---- Rejected inputs: exit 2, the message names the file and the place, nothing written ----
 
 enum class Motion { el_centro, missing, non_numeric };
@@ -401,6 +422,9 @@ INSTANTIATE_TEST_SUITE_P(
                     "command line", "--scale: must be a finite number other than 0"},
         BadFrameRun{"zero_step", portal_frame(true), Motion::el_centro, "--step 0", "command line",
                     "--step: must be a finite time step > 0 s"},
+        BadFrameRun{"zero_core_elements", portal_frame(true), Motion::el_centro,
+                    "--core-elements 0", "command line",
+                    "--core-elements: must be a whole number from 1 to 4096"},
         BadFrameRun{"missing_output_parent", portal_frame(true), Motion::el_centro, "", "out",
                     "cannot create the output directory: its parent", true}),
     [](const ::testing::TestParamInfo<BadFrameRun>& info) { return info.param.name; });

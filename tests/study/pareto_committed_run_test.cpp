@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace {
@@ -57,7 +58,8 @@ json committed_summary(const json& max_drift, const json& residual_drift, const 
           {"max_drift", max_drift},
           {"residual_drift", residual_drift},
           {"braces", braces},
-          {"wall_time", 1234.5}};
+          {"wall_time", 1234.5},
+          {"core_elements", nullptr}}; // the brace files' (brbf3's: 16)
 }
 
 TEST(ParetoCommittedRun, ItsDriftsAndTimeAreReadAndTheOtherSettingsMeasuredAgainstThem) {
@@ -138,14 +140,15 @@ TEST(ParetoCommittedRun, WithRunCommittedTheSettingIsRunInstead) {
   EXPECT_EQ(read.frame.max_drift.front(), 1.0);
 }
 
-/// The error of reading `summary` as the committed full-16 run of frame_matrix, or "".
-std::string committed_error(const json& summary) {
+/// The error of reading `summary` as the committed full-16 run of frame_matrix, whose brace
+/// files have `file_elements` core elements, or "".
+std::string committed_error(const json& summary, std::optional<int> file_elements = 16) {
   const ScratchDirectory scratch;
   const auto file = scratch.write("s.json", summary.dump());
   try {
     const ParetoCase study_case =
         read_pareto_matrix(scratch.write("m.json", frame_matrix(file.string()).dump()));
-    (void)read_committed_frame_run(file, study_case, study_case.settings[1], kStep);
+    (void)read_committed_frame_run(file, study_case, study_case.settings[1], kStep, file_elements);
   } catch (const brb::io::InputError& error) {
     EXPECT_EQ(error.file(), file.string());
     return error.what();
@@ -185,6 +188,22 @@ TEST(ParetoCommittedRun, ARunOfAnotherCaseOrSettingIsRefusedNamingTheField) {
   EXPECT_NE(committed_error(other).find("/braces/0/fidelity: the committed run of setting "
                                         "\"full-16\" must be with every brace full"),
             std::string::npos);
+  other = good;
+  other["core_elements"] = 4; // brb frame --core-elements 4: not the setting's 16
+  EXPECT_NE(committed_error(other).find("/core_elements: the committed run of setting "
+                                        "\"full-16\" must be with every brace of the setting's "
+                                        "core element count, 16"),
+            std::string::npos)
+      << committed_error(other);
+  other["core_elements"] = 16; // said explicitly: right, whatever the files say
+  EXPECT_EQ(committed_error(other, 8), "");
+  // null: the files' count, which must then be the setting's
+  EXPECT_NE(committed_error(good, 8).find("/core_elements: "), std::string::npos);
+  EXPECT_NE(committed_error(good, std::nullopt).find("not all the same"), std::string::npos);
+  other = good;
+  other.erase("core_elements"); // a run written before the field: the files' count
+  EXPECT_EQ(committed_error(other), "");
+  EXPECT_NE(committed_error(other, 8).find("it gives no core_elements"), std::string::npos);
   other = good;
   other.erase("wall_time");
   EXPECT_NE(committed_error(other).find("/wall_time: "), std::string::npos);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace brb::frame {
@@ -22,6 +23,9 @@ struct FrameRunDescription {
   std::string integrator; ///< "newmark", "hht" or "explicit"
   double dt = 0.0;        ///< s, analysis time step
   double wall_time = 0.0; ///< s
+  /// every brace's core element count when the run overrode its brace file's (brb frame
+  /// --core-elements); nothing: the files' own
+  std::optional<int> core_elements;
 };
 
 nlohmann::ordered_json frame_summary_json(const FrameModel& frame, const FrameRunResult& result,

@@ -27,10 +27,10 @@
 //     ] }
 //
 // committed_run (frames): the summary.json of a `brb frame` run of this very setting (the
-// matrix's model, record, scale and window, the setting's dt and fidelity), committed because
-// it costs too long to repeat with every study (a frame with 16-element full braces: an hour
-// and more on the 2-core machine). The study reads its drifts, brace CIDs and wall time
-// instead of running it (`brb bench pareto --run-committed` runs it anyway); the file must
+// matrix's model, record, scale and window, the setting's dt, core elements and fidelity),
+// committed because it costs too long to repeat with every study (a frame with 16-element full
+// braces: an hour and more on the 2-core machine). The study reads its drifts, brace CIDs and wall
+// time instead of running it (`brb bench pareto --run-committed` runs it anyway); the file must
 // agree with the case and the setting (read_committed_frame_run checks it).
 //
 // Contact (gap-link) spacing is not a separate axis: the brace model ties one link to every

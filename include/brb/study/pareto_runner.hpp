@@ -56,13 +56,16 @@ struct CommittedFrameRun {
 };
 
 /// Reads a `brb frame` summary.json as the run of `setting` of `study_case`, whose analysis
-/// step is `dt` (s). io::InputError naming the file and the field when a field is missing or
+/// step is `dt` (s) and whose brace files all have `file_core_elements` core elements (nothing
+/// when they differ). io::InputError naming the file and the field when a field is missing or
 /// the run is not of this case and setting: another model (its folder and file name), record
-/// (file name), scale, window (duration), step, or brace fidelity (a `full` or `truss` setting
-/// needs every brace built so).
+/// (file name), scale, window (duration), step, core element count (the run's `core_elements`,
+/// or the files' when it is null, against the setting's, or the files'), or brace fidelity (a
+/// `full` or `truss` setting needs every brace built so).
 CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
                                            const ParetoCase& study_case,
-                                           const ParetoSetting& setting, double dt);
+                                           const ParetoSetting& setting, double dt,
+                                           std::optional<int> file_core_elements);
 
 struct CaseOutcome {
   ParetoCase study_case;
