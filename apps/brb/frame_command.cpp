@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <variant>
 
 namespace brb::cli {
@@ -62,6 +63,21 @@ std::string integrator_name(frame::Integrator integrator) {
 
 } // namespace
 
+std::string progress_line(const frame::FrameProgress& progress, double elapsed) {
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(3) << "brb frame: t = " << progress.time << " of "
+       << progress.duration << " s (step " << progress.step << " of " << progress.steps
+       << "), peak drift " << std::setprecision(2) << 100.0 * progress.peak_drift << " %, "
+       << std::setprecision(1) << elapsed / 60.0 << " min so far";
+  // the rest at the mean rate so far: a rough guide (the steps where braces yield cost more)
+  if (progress.step > 0 && progress.steps > progress.step) {
+    const double left = elapsed / static_cast<double>(progress.step) *
+                        static_cast<double>(progress.steps - progress.step);
+    line << ", about " << left / 60.0 << " min left";
+  }
+  return line.str();
+}
+
 CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
   auto* frame = app.add_subcommand(
       "frame", "Nonlinear time-history analysis of a frame model under a ground motion: "
@@ -107,6 +123,11 @@ CLI::App* add_frame_command(CLI::App& app, FrameCommand& command) {
                    "links follow the core stations); for full braces")
       ->type_name("N");
   frame
+      ->add_option("--progress", command.progress_interval,
+                   "Seconds of run time between progress lines on stderr (time reached, steps, "
+                   "peak drift, time left); default 30, 0: none")
+      ->type_name("S");
+  frame
       ->add_option("--braces", command.braces,
                    "Build every brace as: elastic (an elastic truss of its axial stiffness), "
                    "truss, full or auto, instead of the fidelity the model file gives")
@@ -132,6 +153,8 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
     throw io::InputError("command line", "--scale", "must be a finite number other than 0");
   if (command.duration && !(*command.duration > 0.0))
     throw io::InputError("command line", "--duration", "must be > 0 s");
+  if (!(std::isfinite(command.progress_interval) && command.progress_interval >= 0.0))
+    throw io::InputError("command line", "--progress", "must be a finite number of seconds >= 0");
   if (command.step && !(std::isfinite(*command.step) && *command.step > 0.0))
     throw io::InputError("command line", "--step", "must be a finite time step > 0 s");
   if (command.core_elements && !(*command.core_elements >= 1 && *command.core_elements <= 4096))
@@ -182,6 +205,20 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
       options.recorders.braces.push_back(brace.id);
   }
 
+  // A run with full braces can take an hour: say where it stands every progress_interval.
+  auto next_report = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                   std::chrono::duration<double>(command.progress_interval));
+  if (command.progress_interval > 0.0) {
+    options.progress = [&](const frame::FrameProgress& progress) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now < next_report)
+        return;
+      next_report = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(command.progress_interval));
+      const double elapsed = std::chrono::duration<double>(now - started).count();
+      notes << progress_line(progress, elapsed) << std::endl;
+    };
+  }
   const frame::FrameRunResult result = frame::run_time_history(frame, components, options);
 
   frame::FrameRunDescription description;

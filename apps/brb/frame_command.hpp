@@ -2,6 +2,8 @@
 // (README: "brb frame").
 #pragma once
 
+#include "brb/frame/frame_run.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -28,12 +30,18 @@ struct FrameCommand {
   /// Every brace's core element count instead of its brace file's (a mesh study of a frame's
   /// full braces; the contact links follow the core stations)
   std::optional<int> core_elements;
+  /// s of wall time between progress lines on stderr (the first after as long); 0: none
+  double progress_interval = 30.0;
   /// Overrides every brace's fidelity: elastic, truss, full or auto.
   std::optional<std::string> braces;
   std::filesystem::path output_directory;
 };
 
 CLI::App* add_frame_command(CLI::App& app, FrameCommand& command);
+
+/// The progress line `brb frame` writes on stderr: time reached, steps, peak drift, the run
+/// time so far (`elapsed`, s) and the time left at the mean rate so far.
+std::string progress_line(const frame::FrameProgress& progress, double elapsed);
 
 /// Reads and checks every input first (InputError: nothing written), runs the analysis,
 /// writes the histories and DIR/summary.json, prints the peak drifts. Returns 0 when the run

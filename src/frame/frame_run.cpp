@@ -16,6 +16,13 @@ namespace brb::frame {
 
 namespace {
 
+/// The largest peak story drift ratio recorded so far (0 before any story is).
+double peak_drift_so_far(const FrameRunResult& result) {
+  return result.max_drift.empty()
+             ? 0.0
+             : *std::max_element(result.max_drift.begin(), result.max_drift.end());
+}
+
 constexpr double kStandardGravity = 9806.65; // mm/s^2
 /// Largest translational mass the explicit solver's mass scaling may add (fraction).
 constexpr double kExplicitAddedMassFraction = 0.05;
@@ -496,6 +503,8 @@ FrameRunResult run_time_history(FrameModel& frame,
     result.end_time = target;
     ++result.steps;
     const double drift = recorder.observe(target, *solver);
+    if (options.progress)
+      options.progress({target, result.duration, n, step_count, peak_drift_so_far(result)});
     if (options.record_step_wall_times) {
       result.step_wall_times.push_back(
           std::chrono::duration<double>(std::chrono::steady_clock::now() - step_started).count());

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -336,6 +338,32 @@ TEST(FrameCli, CoreElementsOverrideEveryBracesMeshAndTheSummarySaysSo) {
   EXPECT_TRUE(read_json(own / "summary.json").at("core_elements").is_null());
 }
 
+TEST(FrameCli, ProgressLinesSayWhereALongRunStands) {
+  // --progress S: a line on stderr at most every S seconds of run time (the default, 30 s, says
+  // nothing in a short run: Brbf3ShortRunWritesTheSummaryAndTheRecordedHistories checks an
+  // empty stderr). With a microsecond every step reports: 1 s of the portal at dt 0.01 s.
+  const ScratchDirectory scratch;
+  const auto model = scratch.write("portal.json", portal_frame(false).dump());
+  const auto output = scratch.path() / "results";
+  const CliRun run =
+      run_brb(frame_arguments(model, kElCentro, output, "--duration 1 --progress 0.000001"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const auto lines = lines_of(run.err);
+  ASSERT_EQ(lines.size(), 100u) << run.err;
+  EXPECT_EQ(lines.front().rfind("brb frame: t = 0.010 of 1.000 s (step 1 of 100), peak drift ", 0),
+            0u)
+      << lines.front();
+  EXPECT_NE(lines.front().find(" min left"), std::string::npos);
+  EXPECT_EQ(lines.back().rfind("brb frame: t = 1.000 of 1.000 s (step 100 of 100)", 0), 0u)
+      << lines.back();
+  EXPECT_EQ(lines.back().find(" min left"), std::string::npos); // nothing left
+  // the peak drift reported at the end is the summary's, in percent
+  const double peak = read_json(output / "summary.json").at("max_drift").at(0).get<double>();
+  std::ostringstream percent;
+  percent << std::fixed << std::setprecision(2) << 100.0 * peak << " %";
+  EXPECT_NE(lines.back().find("peak drift " + percent.str()), std::string::npos) << lines.back();
+}
+
 // ---- Rejected inputs: exit 2, the message names the file and the place, nothing written ----
 
 enum class Motion { el_centro, missing, non_numeric };
@@ -425,6 +453,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadFrameRun{"zero_core_elements", portal_frame(true), Motion::el_centro,
                     "--core-elements 0", "command line",
                     "--core-elements: must be a whole number from 1 to 4096"},
+        BadFrameRun{"negative_progress", portal_frame(true), Motion::el_centro,
+                    "--progress -1", "command line",
+                    "--progress: must be a finite number of seconds >= 0"},
         BadFrameRun{"missing_output_parent", portal_frame(true), Motion::el_centro, "", "out",
                     "cannot create the output directory: its parent", true}),
     [](const ::testing::TestParamInfo<BadFrameRun>& info) { return info.param.name; });

@@ -10,6 +10,7 @@
 #include "brb/frame/frame_model.hpp"
 #include "brb/model/work_skips.hpp"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ struct RecorderRequest {
   std::vector<int> braces; ///< user ids of the braces whose histories are written
 };
 
+/// Where a time-history run stands, after each converged step (FrameRunOptions::progress).
+struct FrameProgress {
+  double time = 0.0;       ///< s, reached
+  double duration = 0.0;   ///< s, the whole run (record window and free vibration)
+  long step = 0;           ///< steps done
+  long steps = 0;          ///< steps planned
+  double peak_drift = 0.0; ///< largest |story drift ratio| so far
+};
+
 struct FrameRunOptions {
   Integrator integrator = Integrator::newmark;
   double hht_alpha = -0.05;
@@ -55,6 +65,9 @@ struct FrameRunOptions {
   /// braces included, and those not asked are dropped at the end: the benchmark's
   /// reference). The element switches are build_frame's.
   model::WorkSkips skips;
+  /// Called after every converged step (runs with full braces take minutes to hours:
+  /// `brb frame` reports on stderr from it); empty: nothing called.
+  std::function<void(const FrameProgress&)> progress;
 };
 
 /// A table of histories: a header and rows (one per recorded step).
