@@ -219,8 +219,10 @@ bool boolean_of(const io::JsonValue& value) {
 
 CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
                                            const ParetoCase& study_case,
-                                           const ParetoSetting& setting, double dt,
-                                           std::optional<int> file_core_elements) {
+                                           const ParetoSetting& setting,
+                                           const FrameRunExpectation& expected) {
+  const double dt = expected.dt;
+  const std::optional<int> file_core_elements = expected.file_core_elements;
   const nlohmann::json document = io::read_json_file(summary_file);
   const io::JsonValue root(document, summary_file.string());
   const auto mismatch = [&](const io::JsonValue& value, const std::string& expected) {
@@ -238,9 +240,11 @@ CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_
   if (!same_number(scale.number("scale factor"), study_case.scale))
     throw mismatch(scale, "at the matrix's scale " + io::format_number(study_case.scale));
   const io::JsonValue duration = root.at("duration", "the window analysed, s");
-  if (!same_number(duration.number("duration, s"), study_case.duration))
-    throw mismatch(duration, "over the matrix's window, " + io::format_number(study_case.duration) +
-                                 " s (brb frame --duration)");
+  if (!same_number(duration.number("duration, s"), expected.duration))
+    throw mismatch(duration, "over the matrix's window and the model's free vibration, " +
+                                 io::format_number(expected.duration) +
+                                 " s (brb frame --duration " +
+                                 io::format_number(study_case.duration) + ")");
   const io::JsonValue step = root.at("dt", "the analysis time step, s");
   if (!same_number(step.number("time step, s"), dt))
     throw mismatch(step,
@@ -383,9 +387,12 @@ std::vector<CaseOutcome> run_pareto_cases(const std::vector<ParetoCase>& cases,
       if (!read_from_file(c, k))
         continue;
       const ParetoSetting& setting = cases[c].settings[k];
-      const double dt = setting.dt.value_or(analysis_step(inputs[c]));
-      committed[c].emplace(k, read_committed_frame_run(*setting.committed_run, cases[c], setting,
-                                                       dt, file_core_elements(inputs[c].frame)));
+      FrameRunExpectation expected;
+      expected.dt = setting.dt.value_or(analysis_step(inputs[c]));
+      expected.duration = cases[c].duration + frame::run_options_of(inputs[c].frame).free_vibration;
+      expected.file_core_elements = file_core_elements(inputs[c].frame);
+      committed[c].emplace(
+          k, read_committed_frame_run(*setting.committed_run, cases[c], setting, expected));
     }
   }
   std::vector<CaseOutcome> outcomes(cases.size());

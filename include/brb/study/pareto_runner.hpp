@@ -55,17 +55,24 @@ struct CommittedFrameRun {
   std::string stop_reason; ///< empty when it went to its end
 };
 
-/// Reads a `brb frame` summary.json as the run of `setting` of `study_case`, whose analysis
-/// step is `dt` (s) and whose brace files all have `file_core_elements` core elements (nothing
-/// when they differ). io::InputError naming the file and the field when a field is missing or
-/// the run is not of this case and setting: another model (its folder and file name), record
-/// (file name), scale, window (duration), step, core element count (the run's `core_elements`,
-/// or the files' when it is null, against the setting's, or the files'), or brace fidelity (a
-/// `full` or `truss` setting needs every brace built so).
+/// What a run of a frame setting must show beyond the matrix's model, record and scale.
+struct FrameRunExpectation {
+  double dt = 0.0;       ///< s, the setting's analysis step
+  double duration = 0.0; ///< s, the window plus the model's free vibration
+  /// the core element count all the frame's brace files give (nothing when they differ)
+  std::optional<int> file_core_elements;
+};
+
+/// Reads a `brb frame` summary.json as the run of `setting` of `study_case`, with the step,
+/// analysed time and brace files of `expected`. io::InputError naming the file and the field when a
+/// field is missing or the run is not of this case and setting: another model (its folder and file
+/// name), record (file name), scale, analysed time (duration), step, core element count (the run's
+/// `core_elements`, or the files' when it is null, against the setting's, or the files'), or brace
+/// fidelity (a `full` or `truss` setting needs every brace built so).
 CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_file,
                                            const ParetoCase& study_case,
-                                           const ParetoSetting& setting, double dt,
-                                           std::optional<int> file_core_elements);
+                                           const ParetoSetting& setting,
+                                           const FrameRunExpectation& expected);
 
 struct CaseOutcome {
   ParetoCase study_case;
