@@ -142,7 +142,6 @@ int run_bench_pareto_command(const BenchParetoCommand& command, std::ostream& re
   description.jobs = command.jobs;
   description.repeats = command.repeats;
   description.quick = command.quick;
-  description.run_committed = command.run_committed;
   fs::create_directory(command.output_directory);
   study::write_pareto_outputs(command.output_directory, outcomes, description);
 

@@ -160,12 +160,8 @@ int run_frame_command(const FrameCommand& command, std::ostream& report, std::os
   if (command.core_elements && !(*command.core_elements >= 1 && *command.core_elements <= 4096))
     throw io::InputError("command line", "--core-elements",
                          "must be a whole number from 1 to 4096");
-  if (command.core_elements) {
-    for (model::FrameElementSpec& element : spec.elements) {
-      if (auto* brace = std::get_if<model::BraceElementSpec>(&element.kind))
-        brace->brace.core_elements = *command.core_elements;
-    }
-  }
+  if (command.core_elements)
+    spec.set_brace_core_elements(*command.core_elements);
   frame::FrameRunOptions options = frame::run_options_of(spec);
   if (command.step)
     options.dt = *command.step;

@@ -221,8 +221,6 @@ CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_
                                            const ParetoCase& study_case,
                                            const ParetoSetting& setting,
                                            const FrameRunExpectation& expected) {
-  const double dt = expected.dt;
-  const std::optional<int> file_core_elements = expected.file_core_elements;
   const nlohmann::json document = io::read_json_file(summary_file);
   const io::JsonValue root(document, summary_file.string());
   const auto mismatch = [&](const io::JsonValue& value, const std::string& expected) {
@@ -246,9 +244,9 @@ CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_
                                  " s (brb frame --duration " +
                                  io::format_number(study_case.duration) + ")");
   const io::JsonValue step = root.at("dt", "the analysis time step, s");
-  if (!same_number(step.number("time step, s"), dt))
-    throw mismatch(step,
-                   "at the setting's step, " + io::format_number(dt) + " s (brb frame --step)");
+  if (!same_number(step.number("time step, s"), expected.dt))
+    throw mismatch(step, "at the setting's step, " + io::format_number(expected.dt) +
+                             " s (brb frame --step)");
 
   // "core_elements": a number when the run overrode the brace files' count (brb frame
   // --core-elements); null or absent (runs written before the field) when it did not
@@ -256,21 +254,21 @@ CommittedFrameRun read_committed_frame_run(const std::filesystem::path& summary_
   const bool overridden = elements && !elements->json().is_null();
   const std::optional<int> run_elements =
       overridden ? std::optional<int>(static_cast<int>(elements->number("core element count")))
-                 : file_core_elements;
+                 : expected.file_core_elements;
   const std::optional<int> setting_elements =
-      setting.core_elements ? setting.core_elements : file_core_elements;
+      setting.core_elements ? setting.core_elements : expected.file_core_elements;
   if (!run_elements || run_elements != setting_elements) {
-    const std::string expected =
+    const std::string requirement =
         "with every brace of the setting's core element count, " +
         (setting_elements ? std::to_string(*setting_elements) : std::string("its file's")) +
         " (brb frame --core-elements; none or null: the brace files', " +
-        (file_core_elements ? std::to_string(*file_core_elements)
-                            : std::string("not all the same")) +
+        (expected.file_core_elements ? std::to_string(*expected.file_core_elements)
+                                     : std::string("not all the same")) +
         ")";
     if (elements)
-      throw mismatch(*elements, expected);
-    throw root.error("the committed run of setting \"" + setting.label + "\" must be " + expected +
-                     " (it gives no core_elements: the brace files')");
+      throw mismatch(*elements, requirement);
+    throw root.error("the committed run of setting \"" + setting.label + "\" must be " +
+                     requirement + " (it gives no core_elements: the brace files')");
   }
 
   CommittedFrameRun run;

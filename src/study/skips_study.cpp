@@ -109,10 +109,7 @@ FrameScene frame_scene(const SkipsStudyOptions& options) {
   FrameScene scene;
   scene.source = options.frame_file.string();
   scene.spec = io::read_frame(options.frame_file);
-  for (model::FrameElementSpec& element : scene.spec.elements) {
-    if (auto* brace = std::get_if<model::BraceElementSpec>(&element.kind))
-      brace->brace.core_elements = options.frame_core_elements;
-  }
+  scene.spec.set_brace_core_elements(options.frame_core_elements);
   io::GroundMotionOptions motion_options;
   motion_options.scale = options.record_scale;
   const io::GroundMotion motion = io::load_ground_motion(options.record, motion_options);

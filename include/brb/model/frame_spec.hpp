@@ -209,6 +209,9 @@ struct FrameSpec {
   const FrameNodeSpec& node(int id) const;
   /// Distance between an element's two nodes (mm).
   double element_length(const FrameElementSpec& element) const;
+  /// Gives every brace (`brb` element) `count` core elements instead of its brace file's (a
+  /// mesh study of the frame's full braces).
+  void set_brace_core_elements(int count);
 };
 
 } // namespace brb::model

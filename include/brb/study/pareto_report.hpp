@@ -25,7 +25,6 @@ struct ParetoRunDescription {
   int jobs = 1;
   std::optional<int> repeats;
   bool quick = false;
-  bool run_committed = false; ///< --run-committed
 };
 
 /// pareto.csv: a header line and one row per case and setting (columns in the README).
