@@ -69,7 +69,19 @@ bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration, Eige
   restore_committed_internal_state();
   analysis_.set_motion_target(local);
   work_is_committed_ = false;
-  const StepReport report = analysis_.step_to(1.0);
+  // Between the iterations of a global step, retrace the internal path of the last solve
+  // (StaticAnalysis::retrace_last_path: smooth in the target, so the global Newton sees a
+  // smooth brace); the first evaluation of a step, a target far from the last one, or a
+  // retrace that fails solves adaptively from the committed state.
+  StepReport report = analysis_.retrace_last_path();
+  if (!report.converged) {
+    if (report.substeps > 0) { // substeps before the failing one were committed
+      work_.model.copy_element_states_from(committed_model_.model);
+      analysis_.restore_path_state(committed_path_);
+      analysis_.set_motion_target(local);
+    }
+    report = analysis_.step_to(1.0);
+  }
   if (!report.converged) {
     failure = "BRB element (condensed): the internal solve failed: " + report.failure;
     return false;

@@ -20,8 +20,12 @@
 // Path dependence: every evaluation restarts from the committed internal state (a twin
 // model holds the committed element states, AnalysisPathState the committed path), because
 // the nested solver commits its substeps; commit() takes the trial internal state over,
-// revert_to_committed() drops it. A failed internal solve returns false with the reason and
-// leaves the committed state untouched; the global solver then cuts its step.
+// revert_to_committed() drops it. The first evaluation of a global step solves adaptively
+// (StaticAnalysis::step_to); the next ones, at targets near it, retrace that solve's
+// substeps with warm starts (StaticAnalysis::retrace_last_path), so that the forces are a
+// smooth function of the outer configuration within a global step. A failed internal solve returns
+// false with the reason and leaves the committed state untouched; the global solver then cuts its
+// step.
 //
 // Energy: stored = stored energy of the internal elements; dissipated = their dissipation
 // plus the energy the internal solver booked as released in jumps (pseudo-transient
@@ -84,6 +88,8 @@ public:
   /// Internal solver statistics since construction (all evaluations).
   int internal_iterations() const { return analysis_.total_iterations(); }
   int internal_regularised_steps() const { return analysis_.regularised_steps(); }
+  /// Evaluations solved by retracing the last internal path (StaticAnalysis::retrace_last_path).
+  int internal_retraced_steps() const { return analysis_.retraced_steps(); }
   /// Evaluations answered from the last one (WorkSkips::reuse_tangents).
   long reused_evaluations() const { return reused_evaluations_; }
 

@@ -28,6 +28,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -105,6 +106,13 @@ struct NewtonSettings {
   /// (`solver.balance_tolerance`, 5e-7 for those that use it) where it was measured to
   /// leave the path as it is.
   double balance_tolerance = 0.0;
+  /// Path retrace (retrace_last_path; 0: off): a new motion target may retrace the last
+  /// step's substeps when it lies closer than this fraction of that step's travel to the
+  /// target it was solved for (both measured as the largest motion of a prescribed node,
+  /// rotations times the model's size). Below 0.5, so that a halved global step (a target
+  /// half the travel back) is solved afresh: a retrace would carry a jump of the full step
+  /// (a core snapped to a higher mode) to a target that need not reach it.
+  double retrace_target_ratio = 0.25;
 };
 
 /// What one call of step_to() did.
@@ -193,6 +201,24 @@ public:
 
   /// Moves the control (displacement or load factor) to `target` from its current value.
   StepReport step_to(double target);
+  /// Under prescribed motion, solves the last converged step_to() again for the current
+  /// motion target, from the committed state that step started from (the caller restores
+  /// it: a condensed element between the iterations of its global step): the same
+  /// substeps (control values; Newton, or pseudo-transient continuation where that step
+  /// passed a limit point), each Newton solve started from the configuration the substep
+  /// reached last time, and none of step_to's step-size controls (no cuts: the substeps
+  /// were chosen for a target within NewtonSettings::retrace_target_ratio of this one).
+  /// Why: the global Newton of a frame asks a brace for its forces at targets that differ
+  /// by ever smaller corrections; an adaptive solve from scratch for each may cut its step
+  /// differently or land on a neighbouring equilibrium of the restrained core, so the
+  /// forces it returns jump by more than the global tolerance (measured: brbf3's global
+  /// Newton stalled at residuals of 4 to 130 N). A retrace is a smooth function of the
+  /// target and is cheaper. Refused (converged false, nothing moved, the failure says why)
+  /// without such a step, from another state, or for a target too far; a substep that does
+  /// not converge or lands far from its start (NewtonSettings::max_correction_ratio,
+  /// Element::jumped_past_peak) stops it with the reason, leaving the substeps before it
+  /// committed, like step_to; either way the caller then solves with step_to().
+  StepReport retrace_last_path();
 
   /// Current value of the control and the force conjugate to it (the reaction at the
   /// controlled DOF in displacement control; the load factor's work-conjugate in load control).
@@ -214,6 +240,7 @@ public:
   int energy_cuts() const { return energy_cuts_; }
   int energy_tolerance_missed() const { return energy_tolerance_missed_; }
   int far_branch_cuts() const { return far_branch_cuts_; }
+  int retraced_steps() const { return retraced_steps_; }
 
   /// Solves the initial state (control at zero) so that reactions and energies exist.
   StepReport initialise();
@@ -249,6 +276,17 @@ private:
   /// pseudo_transient): per node, |sym K| of its translation block and of its rotation block.
   Eigen::SparseMatrix<double> nodal_stiffness_metric() const;
   Attempt pseudo_transient(double control);
+  /// Where a jump started: the elements' energies and the control force with the control
+  /// moved and the free nodes still at the committed state.
+  struct JumpStart {
+    element::ElementEnergy energy;
+    double control_force = 0.0;
+  };
+  /// Books the energy a jump released, from its start to the assembled trial state (its rest
+  /// point) over the free-DOF motion `travelled`; returns the external work of the step.
+  double book_jump(const JumpStart& start, const Eigen::VectorXd& travelled, double control);
+  /// Free-DOF motion of the trial state from the committed one (spins as rotation vectors).
+  Eigen::VectorXd free_motion_since_commit() const;
   /// Whether the converged trial state is within NewtonSettings::max_correction_ratio of
   /// the tangent predictor `predicted`.
   bool lands_near_predictor(const std::vector<element::NodeConfiguration>& predicted) const;
@@ -286,10 +324,34 @@ private:
   /// Whether a converged step dissipates no more than its work supplies (the second test of
   /// the far-branch control).
   bool dissipation_supplied_by_work(const StepEnergy& step) const;
+  /// Whether a converged step changes the elements' energy (stored + dissipated) by its work,
+  /// within half its magnitude: not a jump to another branch (retrace_last_path's test of a
+  /// warm-started substep; a step-size control would flip with the target).
+  bool energy_change_supplied_by_work(const StepEnergy& step) const;
   void commit(double control, const StepEnergy& step);
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
   bool tangent_is_positive_definite() const;
   void revert();
+
+  /// One committed substep of the last step_to(), for retrace_last_path().
+  struct PathSubstep {
+    double control = 0.0;
+    bool passed_limit_point = false;
+    bool stable = true; ///< whether its equilibrium was stable (or accepted unstable)
+    std::vector<element::NodeConfiguration> nodes; ///< the configuration it converged to
+  };
+  /// Largest motion between two configurations of the prescribed nodes (rotation angle
+  /// times the model's size).
+  double motion_distance(std::span<const element::NodeConfiguration> from,
+                         std::span<const element::NodeConfiguration> to) const;
+  /// Why the last path cannot be retraced to the current target; empty when it can.
+  std::string retrace_refusal() const;
+  /// Retraces a substep that passed a limit point: Newton from the configuration the jump
+  /// came to rest at last time, its energy booked as pseudo_transient books it. False (the
+  /// caller reverts) when Newton does not converge there, lands far from it, or lands on an
+  /// equilibrium `unstable` refuses.
+  bool retrace_jump(const PathSubstep& substep, StepReport& report,
+                    const std::function<bool(const PathSubstep&)>& unstable);
 
   model::Model& model_;
   NewtonSettings settings_;
@@ -333,6 +395,13 @@ private:
   int energy_cuts_ = 0;
   int energy_tolerance_missed_ = 0;
   int far_branch_cuts_ = 0;
+  int retraced_steps_ = 0;
+  // the last step_to() under prescribed motion: where it started, its target, its substeps
+  bool recording_path_ = false;
+  std::vector<element::NodeConfiguration> path_start_;
+  double path_start_control_ = 0.0;
+  std::vector<element::NodeConfiguration> path_target_;
+  std::vector<PathSubstep> path_;
   double energy_error_sum_ = 0.0;   // sum over committed steps of |work - change of energy|
   double released_at_commit_ = 0.0; // released_by_laws at the last commit
   bool committed_stable_ = true;
