@@ -207,20 +207,25 @@ public:
   /// Under prescribed motion, solves the last converged step_to() again for the current
   /// motion target, from the committed state that step started from (the caller restores
   /// it: a condensed element between the iterations of its global step): the same
-  /// substeps (control values; Newton, or pseudo-transient continuation where that step
-  /// passed a limit point), each Newton solve started from the configuration the substep
-  /// reached last time, and none of step_to's step-size controls (no cuts: the substeps
-  /// were chosen for a target within NewtonSettings::retrace_target_ratio of this one).
+  /// substeps (control values), each Newton solve started from the configuration the
+  /// substep reached last time; a substep that passed a limit point is solved by Newton
+  /// from the branch that jump reached (failing that, by pseudo-transient continuation
+  /// again), its released energy booked as pseudo_transient books it; none of step_to's
+  /// step-size cuts (the substeps were chosen for a target closer than
+  /// NewtonSettings::retrace_target_ratio of its travel to this one).
   /// Why: the global Newton of a frame asks a brace for its forces at targets that differ
   /// by ever smaller corrections; an adaptive solve from scratch for each may cut its step
-  /// differently or land on a neighbouring equilibrium of the restrained core, so the
-  /// forces it returns jump by more than the global tolerance (measured: brbf3's global
-  /// Newton stalled at residuals of 4 to 130 N). A retrace is a smooth function of the
-  /// target and is cheaper. Refused (converged false, nothing moved, the failure says why)
-  /// without such a step, from another state, or for a target too far; a substep that does
-  /// not converge or lands far from its start (NewtonSettings::max_correction_ratio,
-  /// Element::jumped_past_peak) stops it with the reason, leaving the substeps before it
-  /// committed, like step_to; either way the caller then solves with step_to().
+  /// differently or come to rest elsewhere after a jump, so the forces it returns jump by
+  /// more than the global tolerance (measured: brbf3's global Newton stalled at residuals of
+  /// 4 to 130 N). A retrace is a smooth function of the target and is cheaper.
+  /// Refused (converged false, nothing moved, the failure says why) without such a step,
+  /// from another state, or for a target too far. Stopped, with the reason and the
+  /// substeps before it committed (like step_to), by a substep that does not converge,
+  /// lands on another branch (NewtonSettings::max_correction_ratio's tests and
+  /// energy_change_supplied_by_work), would exceed the energy-error budget
+  /// (NewtonSettings::energy_tolerance, balance_tolerance), or, as the last one, ends on an
+  /// unstable equilibrium where step_to's ended on a stable one. Either way the caller then
+  /// solves with step_to().
   StepReport retrace_last_path();
 
   /// Current value of the control and the force conjugate to it (the reaction at the
