@@ -76,9 +76,9 @@ bool BRBElement::evaluate(std::span<const NodeConfiguration> configuration, Eige
   StepReport report = analysis_.retrace_last_path();
   if (!report.converged) {
     if (report.substeps > 0) { // substeps before the failing one were committed
-      work_.model.copy_element_states_from(committed_model_.model);
-      analysis_.restore_path_state(committed_path_);
+      restore_committed_internal_state();
       analysis_.set_motion_target(local);
+      work_is_committed_ = false;
     }
     report = analysis_.step_to(1.0);
   }

@@ -328,9 +328,8 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
 
 StaticAnalysis::Attempt StaticAnalysis::newton(double control,
                                                const Eigen::SparseMatrix<double>* viscosity,
-                                               int max_iterations) {
+                                               int max_iterations, bool assembled) {
   Attempt attempt;
-  bool assembled = false;
   Eigen::VectorXd residual;
   // With a viscosity C (free x free, symmetric positive definite) this is one backward-Euler step
   // of the gradient flow C du/dtau = F_ext - F_int(u) (pseudo-time step 1): the residual
@@ -755,19 +754,12 @@ StepReport StaticAnalysis::retrace_last_path() {
   report.failure = retrace_refusal();
   if (!report.failure.empty())
     return report;
-  // The committed end of the global step must be as stable as the adaptive solve found it
-  // (an unstable equilibrium the retrace accepted would be left by the next step's adaptive
-  // solve through a jump): the last substep's tangent is checked like try_increment's.
-  const auto unstable_end = [&](const PathSubstep& substep) {
-    return &substep == &path_.back() && settings_.require_stable_equilibrium && substep.stable &&
-           !tangent_is_positive_definite();
-  };
   for (PathSubstep& substep : path_) {
     revert();
     mark_path_point();
     if (substep.passed_limit_point) {
       // Onto the branch the jump reached last time; failing that, the continuation again.
-      if (!retrace_jump(substep, report, unstable_end)) {
+      if (!retrace_jump(substep, report)) {
         revert();
         if (!pass_limit_point(substep.control, report)) {
           report.failure = "retrace: " + last_pseudo_failure_;
@@ -808,7 +800,7 @@ StepReport StaticAnalysis::retrace_last_path() {
       report.failure = "retrace: a substep would exceed the energy-error budget";
       break;
     }
-    if (unstable_end(substep)) {
+    if (unstable_end_of_path(substep)) {
       report.failure = "retrace: converged to an unstable equilibrium";
       break;
     }
@@ -985,13 +977,17 @@ Eigen::VectorXd StaticAnalysis::free_motion_since_commit() const {
   return motion;
 }
 
-bool StaticAnalysis::retrace_jump(const PathSubstep& substep, StepReport& report,
-                                  const std::function<bool(const PathSubstep&)>& unstable) {
+bool StaticAnalysis::unstable_end_of_path(const PathSubstep& substep) const {
+  return &substep == &path_.back() && settings_.require_stable_equilibrium && substep.stable &&
+         !tangent_is_positive_definite();
+}
+
+bool StaticAnalysis::retrace_jump(const PathSubstep& substep, StepReport& report) {
   // The jump's start, as pseudo_transient books it: the control moved, the free nodes at
   // the committed state.
   set_control_value(substep.control);
   std::string failure;
-  if (!assemble(true, failure))
+  if (!assemble(false, failure)) // its forces and energies; no tangent needed
     return false;
   const JumpStart start{element_energy(), internal_force_.dot(control_rate_)};
   // Newton from where the jump came to rest last time: the branch it jumped to.
@@ -1001,9 +997,11 @@ bool StaticAnalysis::retrace_jump(const PathSubstep& substep, StepReport& report
     return false;
   mark_path_point();
   const std::vector<NodeConfiguration> guess = trial_;
-  const Attempt attempt = newton(substep.control, nullptr, settings_.max_iterations);
+  const Attempt attempt =
+      newton(substep.control, nullptr, settings_.max_iterations, /*assembled=*/true);
   report.iterations += attempt.iterations;
-  if (!attempt.converged || !lands_near_predictor(guess) || jumped_past_peak() || unstable(substep))
+  if (!attempt.converged || !lands_near_predictor(guess) || jumped_past_peak() ||
+      unstable_end_of_path(substep))
     return false;
   committed_stable_ = substep.stable;
   const double work = book_jump(start, free_motion_since_commit(), substep.control);

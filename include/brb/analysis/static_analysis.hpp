@@ -28,7 +28,6 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
-#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -278,8 +277,10 @@ private:
   /// floor).
   bool residual_converged(const Eigen::VectorXd& residual, double control) const;
   /// Newton-Raphson at `control`; with `viscosity` (free x free), one backward-Euler step
-  /// of the gradient flow from the trial state (see pseudo_transient).
-  Attempt newton(double control, const Eigen::SparseMatrix<double>* viscosity, int max_iterations);
+  /// of the gradient flow from the trial state (see pseudo_transient). `assembled`: the trial
+  /// state is already assembled (with its tangent), so the first iteration does not assemble.
+  Attempt newton(double control, const Eigen::SparseMatrix<double>* viscosity, int max_iterations,
+                 bool assembled = false);
   /// The metric of the pseudo-transient viscosity from the last assembled tangent (see
   /// pseudo_transient): per node, |sym K| of its translation block and of its rotation block.
   Eigen::SparseMatrix<double> nodal_stiffness_metric() const;
@@ -356,10 +357,15 @@ private:
   std::string retrace_refusal() const;
   /// Retraces a substep that passed a limit point: Newton from the configuration the jump
   /// came to rest at last time, its energy booked as pseudo_transient books it. False (the
-  /// caller reverts) when Newton does not converge there, lands far from it, or lands on an
-  /// equilibrium `unstable` refuses.
-  bool retrace_jump(const PathSubstep& substep, StepReport& report,
-                    const std::function<bool(const PathSubstep&)>& unstable);
+  /// caller reverts) when Newton does not converge there, lands far from it, or ends the
+  /// path unstable (unstable_end_of_path).
+  bool retrace_jump(const PathSubstep& substep, StepReport& report);
+  /// Whether the retraced (assembled) state of `substep` ends the path on an unstable
+  /// equilibrium where step_to's ended on a stable one: the committed end of a global step
+  /// must be as stable as the adaptive solve found it (an unstable equilibrium accepted
+  /// would be left by the next step's adaptive solve through a jump); the tangent is checked
+  /// like try_increment's, for the last substep only.
+  bool unstable_end_of_path(const PathSubstep& substep) const;
 
   model::Model& model_;
   NewtonSettings settings_;
