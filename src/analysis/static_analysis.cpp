@@ -342,6 +342,7 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
       r -= (*viscosity) * moved_;
     return r;
   };
+  int polished = 0;
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
     if (!assembled && !assemble(true, attempt.failure))
       return attempt;
@@ -351,10 +352,22 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
       attempt.failure = "non-finite residual";
       return attempt;
     }
+    // Within tolerance: converged, unless polishing corrections are asked
+    // (NewtonSettings::polish_corrections). A polishing correction is taken whole: the line
+    // search guards against divergence from far away, and at round-off it cannot decrease
+    // the norm.
+    bool polishing = false;
     if (residual_converged(residual, control)) {
-      attempt.converged = true;
-      attempt.iterations = iteration;
-      return attempt;
+      if (viscosity != nullptr || polished >= settings_.polish_corrections ||
+          iteration == max_iterations) {
+        attempt.converged = true;
+        attempt.iterations = iteration;
+        return attempt;
+      }
+      polishing = true;
+      ++polished;
+      if (iteration == 0)
+        attempt.started_within_tolerance = true;
     }
     if (iteration == max_iterations)
       break;
@@ -391,8 +404,8 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
       moved_ = start_moved + step * increment;
       std::string failure;
       const bool ok = assemble(true, failure);
-      const bool accept =
-          ok && (!settings_.line_search || search == 6 || pseudo_residual().norm() < start_norm);
+      const bool accept = ok && (!settings_.line_search || polishing || search == 6 ||
+                                 pseudo_residual().norm() < start_norm);
       if (accept) {
         assembled = true;
         break;
@@ -524,7 +537,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
     const std::vector<NodeConfiguration> predicted = trial_;
     attempt = newton(to, nullptr, settings_.max_iterations);
-    landed_far = attempt.converged && !lands_near_predictor(predicted);
+    landed_far =
+        attempt.converged && !attempt.started_within_tolerance && !lands_near_predictor(predicted);
     if (attempt.converged && jumped_past_peak()) {
       // Crushed from intact within the substep: another branch (jumped_past_peak). Cut;
       // at the floor the state is not the path either, so the step is treated as failed
@@ -789,8 +803,8 @@ StepReport StaticAnalysis::retrace_last_path() {
     // motion, a link crushed from intact, or stored energy released that the step's work did
     // not supply.
     const StepEnergy step = trial_step_energy();
-    if (!lands_near_predictor(guess) || jumped_past_peak() || !dissipation_supplied_by_work(step) ||
-        !energy_change_supplied_by_work(step)) {
+    if ((!attempt.started_within_tolerance && !lands_near_predictor(guess)) || jumped_past_peak() ||
+        !dissipation_supplied_by_work(step) || !energy_change_supplied_by_work(step)) {
       report.failure = "retrace: a substep landed on another branch";
       break;
     }
@@ -1000,8 +1014,8 @@ bool StaticAnalysis::retrace_jump(const PathSubstep& substep, StepReport& report
   const Attempt attempt =
       newton(substep.control, nullptr, settings_.max_iterations, /*assembled=*/true);
   report.iterations += attempt.iterations;
-  if (!attempt.converged || !lands_near_predictor(guess) || jumped_past_peak() ||
-      unstable_end_of_path(substep))
+  if (!attempt.converged || (!attempt.started_within_tolerance && !lands_near_predictor(guess)) ||
+      jumped_past_peak() || unstable_end_of_path(substep))
     return false;
   committed_stable_ = substep.stable;
   const double work = book_jump(start, free_motion_since_commit(), substep.control);
