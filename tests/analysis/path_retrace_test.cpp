@@ -285,7 +285,10 @@ TEST(PathRetrace, AJumpIsRetracedOntoTheBranchItReachedWithItsEnergyBooked) {
   // the control stops on the old branch before the jump), which moves the step's work and
   // release by the trapezoidal rule's error over those substeps (measured: 1.5e-3 of the
   // release), not the branch reached.
-  for (const double correction : {0.0, 0.4, -0.3, 0.1}) {
+  // -1.0 and -1.5 (20 and 30 % of the 5 mm step, within retrace_target_ratio) bring the limit
+  // point before the substeps that ended on the upper branch last time: the retrace jumps
+  // earlier (StaticAnalysis::retrace_early_jump).
+  for (const double correction : {0.0, 0.4, -0.3, 0.1, -1.0, -1.5}) {
     // retrace, then the adaptive solve of the same target from the same state
     truss->model.copy_element_states_from(twin->model);
     analysis.restore_path_state(before_jump);

@@ -368,6 +368,12 @@ private:
                          std::span<const element::NodeConfiguration> to) const;
   /// Why the last path cannot be retraced to the current target; empty when it can.
   std::string retrace_refusal() const;
+  /// Substep `failed` of the path found no equilibrium near its recorded one (or landed on
+  /// another branch): jumps there, at its control, to the branch the next recorded jump reached,
+  /// and rewrites the path (that substep a jump, the ones up to the old jump steps along the
+  /// branch reached). False, the trial state reverted, without a later jump or when the jump's
+  /// Newton fails.
+  bool retrace_early_jump(std::size_t failed, StepReport& report);
   /// Retraces a substep that passed a limit point: Newton from the configuration the jump
   /// came to rest at last time, its energy booked as pseudo_transient books it. False (the
   /// caller reverts) when Newton does not converge there, lands far from it, or ends the
