@@ -7,12 +7,11 @@
 // continuation books it.
 #include "brb/analysis/brb_element.hpp"
 #include "brb/analysis/static_analysis.hpp"
-#include "brb/element/corot_truss.hpp"
-#include "brb/material/steel_uniaxial.hpp"
 #include "brb/model/brace_model.hpp"
 
 #include "support/brace_fixtures.hpp"
 #include "support/brb_element_fixtures.hpp"
+#include "support/shallow_truss.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <iostream>
-#include <memory>
 #include <vector>
 
 namespace brb::analysis {
@@ -218,40 +216,7 @@ TEST(PathRetrace, CondensedBraceForcesAreSmoothWithinAGlobalStep) {
             << " N)\n";
 }
 
-/// The von Mises truss of SnapThrough (half-span 1000 mm, rise 50 mm, elastic bars) loaded
-/// at its apex through a 5 N/mm spring whose far end (`driver`) is moved.
-struct ShallowTruss {
-  model::Model model;
-  int apex = 0;
-  int driver = 0;
-};
-
-std::unique_ptr<ShallowTruss> shallow_truss() {
-  using Truss = element::CorotTruss<material::SteelUniaxial>;
-  auto truss = std::make_unique<ShallowTruss>();
-  model::Model& model = truss->model;
-  const int left = model.add_node({-1000.0, 0.0, 0.0});
-  const int right = model.add_node({1000.0, 0.0, 0.0});
-  truss->apex = model.add_node({0.0, 50.0, 0.0});
-  truss->driver = model.add_node({0.0, 1050.0, 0.0});
-  material::SteelParameters steel;
-  steel.youngs_modulus = 210000.0;
-  steel.poissons_ratio = 0.3;
-  steel.yield_stress = 1e9; // elastic
-  const auto bar = [&](int a, int b, double area) {
-    model.add_element(std::make_unique<Truss>(std::array<int, 2>{a, b}, model.coordinates(a),
-                                              model.coordinates(b), area,
-                                              material::SteelUniaxial(steel, 1.0)));
-  };
-  bar(left, truss->apex, 100.0);
-  bar(right, truss->apex, 100.0);
-  bar(truss->apex, truss->driver, 5.0 * 1000.0 / 210000.0);
-  model.fix_all(left);
-  model.fix_all(right);
-  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
-    model.fix(truss->apex, dof);
-  return truss;
-}
+using test::shallow_truss;
 
 TEST(PathRetrace, AJumpIsRetracedOntoTheBranchItReachedWithItsEnergyBooked) {
   // Reference: the adaptive solve (pseudo-transient continuation through the limit point)

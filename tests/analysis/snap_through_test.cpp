@@ -1,23 +1,13 @@
 // The solver passes a snap-through under displacement control (a limit point of the
 // controlled path) by pseudo-transient continuation, and books the energy it releases.
 #include "brb/analysis/static_analysis.hpp"
-#include "brb/element/corot_truss.hpp"
-#include "brb/material/steel_uniaxial.hpp"
+
+#include "support/shallow_truss.hpp"
 
 #include <gtest/gtest.h>
 
 namespace brb::analysis {
 namespace {
-
-using Truss = element::CorotTruss<material::SteelUniaxial>;
-
-material::SteelParameters elastic_steel() {
-  material::SteelParameters steel;
-  steel.youngs_modulus = 210000.0;
-  steel.poissons_ratio = 0.3;
-  steel.yield_stress = 1e9; // elastic throughout
-  return steel;
-}
 
 TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   // Reference: a shallow two-bar (von Mises) truss, half-span 1000 mm, rise 50 mm, loaded at
@@ -27,27 +17,11 @@ TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   // Everything is elastic, so the work done equals the stored energy plus what the jump
   // released (the drop of stored energy across the jump, absorbed by the pseudo-viscosity
   // that carries it).
-  model::Model model;
-  const int left = model.add_node({-1000.0, 0.0, 0.0});
-  const int right = model.add_node({1000.0, 0.0, 0.0});
-  const int apex = model.add_node({0.0, 50.0, 0.0});
-  const int driver = model.add_node({0.0, 1050.0, 0.0});
-  const material::SteelParameters steel = elastic_steel();
-  const auto bar = [&](int a, int b, double area) {
-    model.add_element(std::make_unique<Truss>(std::array<int, 2>{a, b}, model.coordinates(a),
-                                              model.coordinates(b), area,
-                                              material::SteelUniaxial(steel, 1.0)));
-  };
-  bar(left, apex, 100.0);
-  bar(right, apex, 100.0);
-  bar(apex, driver, 5.0 * 1000.0 / 210000.0); // spring k = E A / L = 5 N/mm
-  model.fix_all(left);
-  model.fix_all(right);
-  for (const int node : {apex, driver}) {
-    for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz}) {
-      model.fix(node, dof);
-    }
-  }
+  const auto truss = test::shallow_truss();
+  model::Model& model = truss->model;
+  const int apex = truss->apex, driver = truss->driver;
+  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
+    model.fix(driver, dof);
   StaticAnalysis analysis(model);
   analysis.use_displacement_control(driver, model::uy);
   int jumps = 0;
