@@ -272,9 +272,7 @@ private:
     std::string failure;
     double jump_work = 0.0; ///< pseudo_transient: external work of the step it passed
     /// The start was within tolerance, so what Newton did was the corrections asked by
-    /// NewtonSettings::polish_corrections: a refinement of an equilibrium, not a landing on another
-    /// branch however small the step's own motion (the far-branch test measures corrections
-    /// against that motion).
+    /// NewtonSettings::polish_corrections (lands_near_predictor accepts it).
     bool started_within_tolerance = false;
   };
 
@@ -309,9 +307,11 @@ private:
   double book_jump(const JumpStart& start, const Eigen::VectorXd& travelled, double control);
   /// Free-DOF motion of the trial state from the committed one (spins as rotation vectors).
   Eigen::VectorXd free_motion_since_commit() const;
-  /// Whether the converged trial state is within NewtonSettings::max_correction_ratio of
-  /// the tangent predictor `predicted`.
-  bool lands_near_predictor(const std::vector<element::NodeConfiguration>& predicted) const;
+  /// Whether the trial state that `attempt` converged to is within
+  /// NewtonSettings::max_correction_ratio of the tangent predictor `predicted` (always, when
+  /// the attempt started within tolerance and only polished).
+  bool lands_near_predictor(const Attempt& attempt,
+                            const std::vector<element::NodeConfiguration>& predicted) const;
   /// Commits the state reached by pseudo-transient continuation at control `to`, if any.
   bool pass_limit_point(double to, StepReport& report);
   /// Sum of the elements' energies at their last evaluated (trial) state.
