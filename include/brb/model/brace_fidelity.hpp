@@ -13,12 +13,16 @@
 //      of AISC 341 qualified braces (typically 1.3-1.6);
 //   3. friction coefficient <= 0.15 (the source's 0.1 and common unbonding layers): the
 //      truss's steel law is symmetric, and friction raises the compression force.
-// Measured (bench/PARETO.md, `brb bench pareto`): `auto` = truss on Girona D3, Girona D1 (a
-// case not used to derive the rule), brbf3 and brbf9; against the finest full setting of each,
-// the worst of loop energy, peak forces, beta (components) or peak drift, residual drift, brace
-// CID (frames) is 1.73 % (D3), 1.16 % (D1), 0.99 % (brbf3): kAutoErrorBound = 2 %. brbf9
-// (35.7 % in peak drift): its full braces buckle by the end-zone hinge mechanism of its brace
-// files (validation/aisc/README.md), which this rule does not check yet (README).
+// Measured (bench/PARETO.md, `brb bench pareto`, session 17): `auto` = truss on Girona D3,
+// Girona D1 (a case not used to derive the rule), brbf3 and brbf9, full on the small BRB's case
+// 3 (no tube; not used to derive it). Against the finest full setting of each, the worst of loop
+// energy, peak forces, beta (components) or peak drift, residual drift, brace CID (frames):
+// 1.91 % (D3), 1.16 % (D1), 1.92 % (brbf3, its 16-element braces at dt 0.005 s), 2.14 % (brbf9,
+// its 16-element braces; the story-2 peak drift: near it, at t = 1.84 s, the 16-element story-2
+// brace's compression dips 2.7 % below the 4-element brace's in a jump to a higher buckling
+// mode, which a truss cannot show), 0.03 % (case 3): kAutoErrorBound = 2.5 %. It was 2 % while
+// brbf9's reference was its 4-element braces (truss 0.47 % off them), before its 16-element
+// run completed.
 #pragma once
 
 #include "brb/model/brace_spec.hpp"
@@ -37,7 +41,7 @@ inline constexpr double kEulerMargin = 2.25;
 inline constexpr double kTrussFrictionLimit = 0.15;
 /// The stated error bound of `auto` against the finest `full` setting, on every metric of the
 /// run-time-against-error study (bench/PARETO.md; measured above).
-inline constexpr double kAutoErrorBound = 0.02;
+inline constexpr double kAutoErrorBound = 0.025;
 
 /// E I (N mm^2) of casing tube + mortar fill + core about the weaker section axis,
 /// from their fiber meshes.
