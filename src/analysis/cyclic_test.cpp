@@ -155,17 +155,21 @@ CyclicTestResult CyclicTest::result() const {
     const std::vector<BraceShapeNode> nodes = shape(last_step);
     result.shapes.insert(result.shapes.end(), nodes.begin(), nodes.end());
   }
-  result.completed = result.stop_reason.empty();
-  result.energy_balance = analysis_.energy();
-  result.iterations = analysis_.total_iterations();
-  result.substeps = analysis_.total_substeps();
-  result.regularised_steps = analysis_.regularised_steps();
-  result.unstable_accepted = analysis_.unstable_accepted();
-  result.energy_cuts = analysis_.energy_cuts();
-  result.far_branch_cuts = analysis_.far_branch_cuts();
-  result.energy_tolerance_missed = analysis_.energy_tolerance_missed();
+  record_solver_statistics(analysis_, result);
   result.indicators = tracker_.indicators();
   return result;
+}
+
+void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& result) {
+  result.completed = result.stop_reason.empty();
+  result.energy_balance = analysis.energy();
+  result.iterations = analysis.total_iterations();
+  result.substeps = analysis.total_substeps();
+  result.regularised_steps = analysis.regularised_steps();
+  result.unstable_accepted = analysis.unstable_accepted();
+  result.energy_cuts = analysis.energy_cuts();
+  result.far_branch_cuts = analysis.far_branch_cuts();
+  result.energy_tolerance_missed = analysis.energy_tolerance_missed();
 }
 
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,

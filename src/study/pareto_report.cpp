@@ -88,9 +88,7 @@ std::string status_of(const SettingOutcome& setting) {
   return "completed";
 }
 
-std::string mode_text(const CaseOutcome& outcome, const ParetoSetting& setting) {
-  if (outcome.study_case.kind == CaseKind::component)
-    return "expanded";
+std::string mode_text(const ParetoSetting& setting) {
   return setting.mode == model::ElementMode::condensed ? "condensed" : "expanded";
 }
 
@@ -151,7 +149,7 @@ void case_section(std::ostream& out, const CaseOutcome& outcome) {
     out << "| " << label << " | " << to_string(s.setting.fidelity) << " | " << s.built_as << " | "
         << optional_int(s.setting.core_elements) << " | " << fibers_text(s.setting) << " | ";
     if (frame)
-      out << mode_text(outcome, s.setting) << " | ";
+      out << mode_text(s.setting) << " | ";
     else
       out << optional_int(s.setting.integration_points) << " | ";
     out << step_text(s.setting) << " | " << (s.ran ? time_text(s.median_time) : "-") << " | "
@@ -245,7 +243,7 @@ std::string pareto_csv(const std::vector<CaseOutcome>& outcomes) {
           << (p.core_elements ? std::to_string(*p.core_elements) : "") << ","
           << (p.fibers ? fibers_text(p) : "") << ","
           << (p.integration_points ? std::to_string(*p.integration_points) : "") << ","
-          << mode_text(outcome, p) << "," << csv_number(p.max_step) << "," << csv_number(p.dt)
+          << mode_text(p) << "," << csv_number(p.max_step) << "," << csv_number(p.dt)
           << "," << s.wall_times.size() << "," << (s.ran ? csv_number(s.median_time) : "") << ","
           << times << "," << (s.ran ? csv_number(speed_up(outcome, s)) : "") << ","
           << csv_number(s.errors.cycle_energy) << "," << csv_number(s.errors.peak_force) << ","

@@ -1,5 +1,6 @@
 #include "brb/study/pareto_runner.hpp"
 
+#include "brb/analysis/condensed_brace.hpp"
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/frame/frame_builder.hpp"
 #include "brb/frame/frame_run.hpp"
@@ -20,6 +21,7 @@
 #include <exception>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <variant>
@@ -90,17 +92,29 @@ RunResult run_component(const ParetoCase& study_case, const CaseInputs& inputs,
   const model::BraceSpec brace = setting.applied_to(inputs.brace);
   const auto started = Clock::now();
   const model::Fidelity fidelity = component_fidelity(brace, setting.fidelity, run.auto_reason);
-  model::BraceModel built = fidelity == model::Fidelity::truss
-                                ? model::build_brace_truss_model(brace)
-                                : model::build_brace_model(brace);
-  const double dy = built.yield_deformation;
+  // Condensed: the brace as one BRBElement between its outer nodes
+  // (analysis/condensed_brace.hpp); otherwise the expanded brace model (or the truss).
+  const bool condensed =
+      fidelity == model::Fidelity::full && setting.mode == model::ElementMode::condensed;
+  std::optional<model::BraceModel> built;
+  std::unique_ptr<analysis::CondensedBraceModel> element;
+  if (condensed)
+    element = analysis::build_condensed_brace_model(brace);
+  else
+    built.emplace(fidelity == model::Fidelity::truss ? model::build_brace_truss_model(brace)
+                                                     : model::build_brace_model(brace));
+  const double dy =
+      condensed ? element->element->internal_brace().yield_deformation : built->yield_deformation;
   // Not timed: the protocol is the same input for every setting (it depends on dy only).
   const auto protocol_started = Clock::now();
   const io::LoadingProtocol protocol = io::read_protocol(
       study_case.protocol, dy, dy * setting.max_step.value_or(kDefaultMaxStepInDy));
   const auto protocol_read = Clock::now();
-  const analysis::CyclicTestResult result = analysis::run_cyclic_test(
-      built, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+  const analysis::CyclicTestResult result =
+      condensed ? analysis::run_condensed_cyclic_test(*element, protocol.deformation,
+                                                      protocol.cycle, protocol.cycle_amplitude)
+                : analysis::run_cyclic_test(*built, protocol.deformation, protocol.cycle,
+                                            protocol.cycle_amplitude);
   run.wall_time = std::chrono::duration<double>(Clock::now() - started).count() -
                   std::chrono::duration<double>(protocol_read - protocol_started).count();
   run.built_as = fidelity == model::Fidelity::truss ? "truss" : "full";

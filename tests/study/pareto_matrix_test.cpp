@@ -73,6 +73,13 @@ TEST(ParetoMatrix, ReadsSettingsAndPicksTheFinestFullAsReference) {
   EXPECT_EQ(applied.core_section.fibers_a, 6);
   EXPECT_EQ(study_case.settings[0].applied_to(brace).core_elements, 16);
 
+  // a component's full brace is the expanded model unless a setting asks it condensed
+  EXPECT_EQ(study_case.settings[1].mode, brb::model::ElementMode::expanded);
+  json condensed = component_matrix();
+  condensed["settings"][1]["mode"] = "condensed";
+  EXPECT_EQ(read_pareto_matrix(scratch.write("c.json", condensed.dump())).settings[1].mode,
+            brb::model::ElementMode::condensed);
+
   json named = component_matrix();
   named["reference"] = "full-4";
   const ParetoCase with_reference = read_pareto_matrix(scratch.write("n.json", named.dump()));
@@ -96,9 +103,9 @@ TEST(ParetoMatrix, ErrorsNameTheJsonPathAndWhatWasExpected) {
             std::string::npos);
 
   matrix = component_matrix();
-  matrix["settings"][1]["mode"] = "condensed";
-  EXPECT_NE(error_of(matrix).find("/settings/1/mode: mode (condensed or expanded) applies to "
-                                  "frame cases only"),
+  matrix["settings"][1]["mode"] = "sideways";
+  EXPECT_NE(error_of(matrix).find("/settings/1/mode: mode must be \"condensed\" or "
+                                  "\"expanded\" (got \"sideways\")"),
             std::string::npos);
 
   matrix = component_matrix();

@@ -1,8 +1,9 @@
-// Helpers for driving a condensed BRBElement: outer-node configurations and a global model
-// holding one element, set up like the stand-alone brace of build_brace_model.
+// Helpers for driving a condensed BRBElement: outer-node configurations, and the condensed
+// brace (analysis/condensed_brace.hpp) compared with the expanded model.
 #pragma once
 
 #include "brb/analysis/brb_element.hpp"
+#include "brb/analysis/condensed_brace.hpp"
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/analysis/static_analysis.hpp"
 #include "brb/element/rotation.hpp"
@@ -18,39 +19,6 @@
 #include <vector>
 
 namespace brb::test {
-
-/// A global model with the two outer nodes of a brace along x (start at the origin), held as
-/// build_brace_model holds its ends (pinned: start ux uy uz rx, end uy uz), and one
-/// condensed BRBElement between them.
-struct CondensedBraceModel {
-  model::Model model;
-  int start_node = 0;
-  int end_node = 0;
-  analysis::BRBElement* element = nullptr;
-};
-
-inline std::unique_ptr<CondensedBraceModel>
-condensed_brace_model(const model::BraceSpec& spec, analysis::NewtonSettings settings = {}) {
-  auto result = std::make_unique<CondensedBraceModel>();
-  model::Model& model = result->model;
-  result->start_node = model.add_node(element::Vector3::Zero());
-  result->end_node = model.add_node(element::Vector3(spec.total_length(), 0.0, 0.0));
-  result->element = &model.add_element(std::make_unique<analysis::BRBElement>(
-      std::array<int, 2>{result->start_node, result->end_node},
-      model.coordinates(result->start_node), model.coordinates(result->end_node), spec,
-      std::nullopt, settings));
-  for (const model::Dof dof : {model::ux, model::uy, model::uz, model::rx})
-    model.fix(result->start_node, dof);
-  for (const model::Dof dof : {model::uy, model::uz})
-    model.fix(result->end_node, dof);
-  if (spec.ends == model::EndCondition::fixed) {
-    for (const model::Dof dof : {model::ry, model::rz})
-      model.fix(result->start_node, dof);
-    for (const model::Dof dof : {model::rx, model::ry, model::rz})
-      model.fix(result->end_node, dof);
-  }
-  return result;
-}
 
 /// Outer-node configurations of a brace from `start` along the axes `axes` (columns: axis,
 /// section y, section z): the start node at rest, the end node moved by `end_motion` and
@@ -90,7 +58,7 @@ inline Comparison compare_condensed_and_expanded(const model::BraceSpec& spec,
       expanded, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, tight);
   EXPECT_TRUE(reference.completed) << reference.stop_reason;
 
-  auto condensed = condensed_brace_model(spec, tight);
+  auto condensed = analysis::build_condensed_brace_model(spec, tight);
   analysis::StaticAnalysis analysis(condensed->model, tight);
   analysis.use_displacement_control(condensed->end_node, model::ux);
   Comparison comparison;

@@ -154,6 +154,10 @@ private:
 /// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
 /// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
 /// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at.
+/// Sets `result`'s completion (no stop reason), energy balance and solver statistics from the
+/// analysis that ran it.
+void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& result);
+
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,

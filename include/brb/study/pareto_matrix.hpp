@@ -21,7 +21,7 @@
 //     "settings": [
 //       {"label": "truss", "fidelity": "truss"},
 //       {"label": "full-16", "fidelity": "full", "core_elements": 16, "fibers": [4, 16],
-//        "integration_points": 3, "mode": "condensed" /* frames */, "max_step": 0.1 /* dy,
+//        "integration_points": 3, "mode": "condensed", "max_step": 0.1 /* dy,
 //        components */, "dt": 0.005 /* s, frames */, "repeats": 1,
 //        "committed_run": "reference/brbf9_full16/summary.json" /* frames, optional */}
 //     ] }
@@ -59,10 +59,11 @@ struct ParetoSetting {
   std::optional<int> core_elements;
   std::optional<std::pair<int, int>> fibers; ///< core section fiber counts (a, b)
   std::optional<int> integration_points;
-  model::ElementMode mode = model::ElementMode::condensed; ///< frames only
-  std::optional<double> max_step;                          ///< dy, components only
-  std::optional<double> dt;                                ///< s, frames only
-  std::optional<int> repeats;                              ///< overrides the case's
+  /// full braces: frames default condensed, components expanded (analysis/condensed_brace.hpp)
+  model::ElementMode mode = model::ElementMode::condensed;
+  std::optional<double> max_step; ///< dy, components only
+  std::optional<double> dt;       ///< s, frames only
+  std::optional<int> repeats;     ///< overrides the case's
   /// frames, optional: summary.json of a committed `brb frame` run of this setting (above)
   std::optional<std::filesystem::path> committed_run;
 
