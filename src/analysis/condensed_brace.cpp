@@ -1,8 +1,8 @@
 #include "brb/analysis/condensed_brace.hpp"
 
-#include <iomanip>
+#include "brb/model/brace_model.hpp"
+
 #include <optional>
-#include <sstream>
 
 namespace brb::analysis {
 
@@ -16,16 +16,7 @@ std::unique_ptr<CondensedBraceModel> build_condensed_brace_model(const model::Br
       std::array<int, 2>{result->start_node, result->end_node},
       model.coordinates(result->start_node), model.coordinates(result->end_node), spec,
       std::nullopt, settings));
-  for (const model::Dof dof : {model::ux, model::uy, model::uz, model::rx})
-    model.fix(result->start_node, dof);
-  for (const model::Dof dof : {model::uy, model::uz})
-    model.fix(result->end_node, dof);
-  if (spec.ends == model::EndCondition::fixed) {
-    for (const model::Dof dof : {model::ry, model::rz})
-      model.fix(result->start_node, dof);
-    for (const model::Dof dof : {model::rx, model::ry, model::rz})
-      model.fix(result->end_node, dof);
-  }
+  model::hold_stand_alone_ends(model, result->start_node, result->end_node, spec.ends);
   return result;
 }
 
@@ -42,10 +33,7 @@ CyclicTestResult run_condensed_cyclic_test(CondensedBraceModel& brace,
   for (std::size_t k = 1; k < deformation.size(); ++k) {
     const StepReport report = analysis.step_to(deformation[k]);
     if (!report.converged) {
-      std::ostringstream reason;
-      reason << "step " << k << " (deformation " << std::setprecision(6) << deformation[k]
-             << " mm): " << report.failure;
-      result.stop_reason = reason.str();
+      result.stop_reason = step_failure(static_cast<int>(k), deformation[k], report.failure);
       break;
     }
     const CyclicStep step{static_cast<int>(k),      cycle[k], analysis.control_value(),

@@ -75,10 +75,7 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
     const int step_index = static_cast<int>(result_.steps.size());
     const StepReport report = analysis_.step_to(deformation[k]);
     if (!report.converged) {
-      std::ostringstream reason;
-      reason << "step " << step_index << " (deformation " << std::setprecision(6) << deformation[k]
-             << " mm): " << report.failure;
-      result_.stop_reason = reason.str();
+      result_.stop_reason = step_failure(step_index, deformation[k], report.failure);
       return false;
     }
     CyclicStep step{step_index,
@@ -158,6 +155,13 @@ CyclicTestResult CyclicTest::result() const {
   record_solver_statistics(analysis_, result);
   result.indicators = tracker_.indicators();
   return result;
+}
+
+std::string step_failure(int step, double deformation, const std::string& failure) {
+  std::ostringstream reason;
+  reason << "step " << step << " (deformation " << std::setprecision(6) << deformation
+         << " mm): " << failure;
+  return reason.str();
 }
 
 void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& result) {

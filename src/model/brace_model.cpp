@@ -332,17 +332,7 @@ BraceModel build(const BraceSpec& spec, const std::vector<std::pair<double, doub
   BraceModel brace;
   static_cast<BraceHandles&>(brace) =
       place(brace.model, spec, offsets, BracePlacement{}, {}, skips, with_casing);
-  Model& model = brace.model;
-  for (const Dof dof : {ux, uy, uz, rx})
-    model.fix(brace.start_node, dof);
-  for (const Dof dof : {uy, uz})
-    model.fix(brace.end_node, dof);
-  if (spec.ends == EndCondition::fixed) {
-    for (const Dof dof : {ry, rz})
-      model.fix(brace.start_node, dof);
-    for (const Dof dof : {rx, ry, rz})
-      model.fix(brace.end_node, dof);
-  }
+  hold_stand_alone_ends(brace.model, brace.start_node, brace.end_node, spec.ends);
   return brace;
 }
 
@@ -395,6 +385,19 @@ BracePlacement BracePlacement::between(const Vector3& start, const Vector3& end,
   placement.axes.col(1) = z.cross(axis);
   placement.axes.col(2) = z;
   return placement;
+}
+
+void hold_stand_alone_ends(Model& model, int start_node, int end_node, EndCondition ends) {
+  for (const Dof dof : {ux, uy, uz, rx})
+    model.fix(start_node, dof);
+  for (const Dof dof : {uy, uz})
+    model.fix(end_node, dof);
+  if (ends == EndCondition::fixed) {
+    for (const Dof dof : {ry, rz})
+      model.fix(start_node, dof);
+    for (const Dof dof : {rx, ry, rz})
+      model.fix(end_node, dof);
+  }
 }
 
 BraceModel build_brace_model(const BraceSpec& spec, const WorkSkips& skips) {

@@ -30,8 +30,8 @@ TEST(CondensedBrace, RestrainedCoreHasTheExpandedModelsHysteresis) {
   const double dy = expanded.yield_deformation;
   const io::LoadingProtocol protocol =
       io::cyclic_protocol("test", {{0.5 * dy, 1}, {dy, 1}, {2.0 * dy, 1}}, dy / 10.0);
-  const CyclicTestResult reference =
-      run_cyclic_test(expanded, protocol.deformation, protocol.cycle, protocol.cycle_amplitude);
+  const CyclicTestResult reference = run_cyclic_test(expanded, protocol.deformation, protocol.cycle,
+                                                     protocol.cycle_amplitude, tight);
   ASSERT_TRUE(reference.completed) << reference.stop_reason;
 
   const auto condensed = build_condensed_brace_model(spec, tight);

@@ -19,8 +19,8 @@
 namespace brb::analysis {
 
 /// The global model: the brace's two outer nodes (start at the origin, end at the brace's
-/// length along x), pinned as build_brace_model pins them (start ux uy uz rx, end uy uz; with
-/// fixed ends every rotation too), and one condensed BRBElement between them.
+/// length along x), held as build_brace_model holds them (model::hold_stand_alone_ends), and
+/// one condensed BRBElement between them.
 struct CondensedBraceModel {
   model::Model model;
   int start_node = 0;

@@ -150,14 +150,18 @@ private:
   HysteresisAccumulator hysteresis_{result_};
 };
 
-/// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
-/// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
-/// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
-/// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at.
+/// The stop reason of a cyclic test whose `step` (to `deformation`, mm) failed: "step 12
+/// (deformation 3.5 mm): <the solver's failure>".
+std::string step_failure(int step, double deformation, const std::string& failure);
+
 /// Sets `result`'s completion (no stop reason), energy balance and solver statistics from the
 /// analysis that ran it.
 void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& result);
 
+/// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
+/// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
+/// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
+/// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at.
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,

@@ -110,6 +110,12 @@ std::vector<std::pair<double, double>> first_buckling_mode(const BraceSpec& spec
 /// steel, and the flexibility of the connection and transition zones at both ends.
 element::BraceTrussParameters truss_parameters(const BraceSpec& spec);
 
+/// The supports of a stand-alone brace along global x (the test set-up of `brb cyclic`): the
+/// start node held (ux uy uz rx), the end node free only along x and in its rotations about
+/// y and z (uy uz held); with fixed ends every rotation held too. Shared by build_brace_model
+/// and analysis::build_condensed_brace_model, so both hold a brace alike.
+void hold_stand_alone_ends(Model& model, int start_node, int end_node, EndCondition ends);
+
 /// The stand-alone brace as one BraceTruss along global x, with the supports of
 /// build_brace_model (every rotation held: the truss carries none). `nodes` = the two
 /// outer nodes; no beams, no casing.
