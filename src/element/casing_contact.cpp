@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace brb::element {
@@ -41,6 +42,37 @@ void CoreExpansion::validate() const {
           "lateral over axial strain nu_c in [0, 0.5]");
 }
 
+void HighModeWaves::validate() const {
+  require(area > 0.0 && std::isfinite(area), "area", "core area must be > 0 mm^2");
+  require(gyration_radius > 0.0 && std::isfinite(gyration_radius), "gyration_radius",
+          "must be > 0 mm");
+  require(thickness > 0.0 && std::isfinite(thickness), "thickness", "must be > 0 mm");
+  require(gap >= 0.0 && std::isfinite(gap), "gap", "clearance must be >= 0 mm");
+  require(tributary_length > 0.0 && std::isfinite(tributary_length), "tributary_length",
+          "must be > 0 mm");
+  require(resolved_half_wave > 0.0 && std::isfinite(resolved_half_wave), "resolved_half_wave",
+          "must be > 0 mm");
+  require(crest_factor >= 0.0 && std::isfinite(crest_factor), "crest_factor", "must be >= 0");
+}
+
+double HighModeWaves::normal_force(double stress, double tangent_modulus) const {
+  if (!(stress < 0.0))
+    return 0.0;
+  const double compression = -stress * area; // P (N)
+  // 1 / l^2 = sigma / (pi^2 r^2 E_t), capped at 1 / thickness^2 (also when E_t <= 0: a
+  // softening core forms the shortest waves)
+  const double shortest = 1.0 / (thickness * thickness);
+  const double pi_r = std::numbers::pi * gyration_radius;
+  const double inverse_square = tangent_modulus > 0.0
+                                    ? std::min(-stress / (pi_r * pi_r * tangent_modulus), shortest)
+                                    : shortest;
+  const double unresolved =
+      inverse_square - 1.0 / (resolved_half_wave * resolved_half_wave); // 1/l^2 - 1/l_mesh^2
+  if (!(unresolved > 0.0))
+    return 0.0;
+  return crest_factor * gap * compression * tributary_length * unresolved;
+}
+
 namespace {
 
 /// nodes_ of a link: core, casing, then the expansion's chord ends not already listed.
@@ -66,13 +98,14 @@ int index_of(const std::vector<int>& nodes, int node) {
 CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
                              const Vector3& casing_position,
                              const CasingContactParameters& parameters, bool skip_open_links,
-                             const std::optional<CoreExpansion>& expansion)
+                             const std::optional<CoreExpansion>& expansion,
+                             const std::optional<HighModeWaves>& waves)
     : nodes_(link_nodes(nodes, expansion)), initial_offset_(core_position - casing_position),
-      parameters_(parameters), bearing_{material::MortarUniaxial(
-                                            (parameters.validate(), parameters.mortar),
-                                            parameters.bearing_depth_y),
-                                        material::MortarUniaxial(parameters.mortar,
-                                                                 parameters.bearing_depth_z)},
+      parameters_(parameters),
+      waves_(waves), bearing_{material::MortarUniaxial((parameters.validate(), parameters.mortar),
+                                                       parameters.bearing_depth_y),
+                              material::MortarUniaxial(parameters.mortar,
+                                                       parameters.bearing_depth_z)},
       friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}),
       skip_open_links_(skip_open_links) {
   if (expansion) {
@@ -81,6 +114,15 @@ CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_posit
     chord_initial_length_ = (expansion->next_position - expansion->previous_position).norm();
     expansion_per_strain_ =
         -0.5 * expansion->ratio * Eigen::Vector2d(expansion->extent_y, expansion->extent_z);
+  }
+  if (waves_) {
+    if (!expansion)
+      throw ParameterError("expansion_nodes",
+                           "the sub-element waves need the core chord around the station");
+    waves_->validate();
+    // characteristic length: the chord's, over which its strain is measured
+    wave_steel_.emplace(waves_->steel, chord_initial_length_);
+    committed_.wave_tangent = waves_->steel.youngs_modulus;
   }
   Eigen::VectorXd unused_force;
   scatter(Vector3::Zero(), open_local_tangent(), unused_force, open_tangent_);
@@ -147,9 +189,22 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     core_chord = chord(configuration);
     expansion_ = expansion_per_strain_ * core_chord.strain;
   }
+  if (waves_) {
+    // N_w from the step's start (lagged, see HighModeWaves); the law follows the chord
+    trial_.wave_normal_force =
+        waves_->normal_force(committed_.wave_stress, committed_.wave_tangent);
+    const auto steel = wave_steel_->evaluate(committed_.wave_steel, core_chord.strain);
+    if (!std::isfinite(steel.stress)) {
+      failure = "casing contact: non-finite core stress of the sub-element waves";
+      return false;
+    }
+    trial_.wave_steel = steel.state;
+    trial_.wave_stress = steel.stress;
+    trial_.wave_tangent = steel.tangent;
+  }
 
-  if (skip_open_links_ && !(penetration(0) > 0.0) && !(penetration(1) > 0.0) &&
-      !(penetration(2) > 0.0) && !(penetration(3) > 0.0)) {
+  if (skip_open_links_ && !(trial_.wave_normal_force > 0.0) && !(penetration(0) > 0.0) &&
+      !(penetration(1) > 0.0) && !(penetration(2) > 0.0) && !(penetration(3) > 0.0)) {
     // Open link: the layer springs only. The state changes as the general path changes it:
     // faces as committed, the friction slip follows the axial motion (F6).
     ++open_evaluations_;
@@ -214,8 +269,10 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     local_tangent(direction, direction) += parameters_.layer_stiffness;
   }
 
-  // Coulomb friction along the axis with the total bearing force as normal force. Called
-  // with dN/dg = 1 so that the tangent's first column is dT/dN.
+  // Coulomb friction along the axis with the total bearing force (and the sub-element
+  // waves' N_w, constant in the step) as normal force. Called with dN/dg = 1 so that the
+  // tangent's first column is dT/dN.
+  normal_force += trial_.wave_normal_force;
   const auto friction = friction_.evaluate_with_normal(committed_.friction, normal_force, 1.0,
                                                        Eigen::Vector2d(relative[0], 0.0));
   trial_.friction = friction.state;

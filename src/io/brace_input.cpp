@@ -211,9 +211,11 @@ std::optional<TubeMisfit> misfit_in_tube(const model::CasingSpec& casing,
 model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
                               const std::optional<model::ZoneSpec>& transition) {
   object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
-                        "layer_stiffness", "fill_fibers", "stopper", "overlap", "core_expansion"},
+                        "layer_stiffness", "fill_fibers", "stopper", "overlap", "core_expansion",
+                        "high_mode_waves"},
                        "a casing object {tube or outline, tube_steel, mortar, gap, friction, "
-                       "layer_stiffness, fill_fibers, stopper, overlap, core_expansion} or null");
+                       "layer_stiffness, fill_fibers, stopper, overlap, core_expansion, "
+                       "high_mode_waves} or null");
   model::CasingSpec casing;
   const auto outline = object.find("outline");
   if (outline && object.find("tube")) {
@@ -279,6 +281,27 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
       throw expansion->error("the core expansion nu_c must be in [0, 0.5] (0: off, 0.5: plastic "
                              "incompressibility; got " +
                              describe_json_value(expansion->json()) + ")");
+    }
+  }
+  if (const auto waves = object.find("high_mode_waves")) {
+    // {"crest_factor": c} (c optional, default 4), or false / true
+    if (waves->json().is_boolean()) {
+      if (waves->json().get<bool>())
+        casing.high_mode_waves = 4.0;
+    } else {
+      waves->expect_object({"crest_factor"},
+                           "the sub-element high-mode waves: {\"crest_factor\": c} (default 4), "
+                           "true or false");
+      casing.high_mode_waves = 4.0;
+      if (const auto factor = waves->find("crest_factor")) {
+        const double crest_factor =
+            factor->number("crest factor c of the sub-element waves (crest force 4 P g / l at 4)");
+        if (!(crest_factor > 0.0 && std::isfinite(crest_factor))) {
+          throw factor->error("the crest factor must be > 0 (got " +
+                              describe_json_value(factor->json()) + ")");
+        }
+        casing.high_mode_waves = crest_factor;
+      }
     }
   }
   if (const auto layer = object.find("layer_stiffness")) {

@@ -62,6 +62,31 @@ void check(bool condition, const std::string& field, const std::string& expected
     throw ParameterError(field, expected);
 }
 
+/// The sub-element waves of a station (element::HighModeWaves): they form in the core's
+/// weaker bending direction (the smaller radius of gyration of its fiber mesh, the one the
+/// beams bend with), across that direction's clearance.
+element::HighModeWaves high_mode_waves(const SectionSpec& section,
+                                       const material::SteelParameters& steel,
+                                       const CasingSpec& casing, double tributary,
+                                       double resolved_half_wave) {
+  const section::FiberLayout layout = section.mesh();
+  const double area = layout.total_area();
+  const double radius_along_z = std::sqrt(layout.second_moment_y() / area); // motion along z
+  const double radius_along_y = std::sqrt(layout.second_moment_z() / area); // motion along y
+  const auto [extent_y, extent_z] = core_extent(section);
+  element::HighModeWaves waves;
+  waves.steel = steel;
+  waves.area = area;
+  const bool along_z = radius_along_z <= radius_along_y;
+  waves.gyration_radius = along_z ? radius_along_z : radius_along_y;
+  waves.thickness = along_z ? extent_z : extent_y;
+  waves.gap = along_z ? casing.gap_z : casing.gap_y;
+  waves.tributary_length = tributary;
+  waves.resolved_half_wave = resolved_half_wave;
+  waves.crest_factor = *casing.high_mode_waves;
+  return waves;
+}
+
 /// Adds the casing around the yielding zone and the transition overlaps (see
 /// brace_model.hpp). Stations: the core nodes of the elements inside the casing (per element:
 /// `inside_casing`, and its section in `element_sections`); each gets a casing node on the
@@ -188,7 +213,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     // The core's expansion from the chord of its neighbour stations (at an end station the
     // station itself is one end); nu_c = 0 leaves the two-node link.
     std::optional<element::CoreExpansion> expansion;
-    if (casing.core_expansion > 0.0 && stations > 1) {
+    const bool waves = casing.high_mode_waves.has_value() && stations > 1;
+    if ((casing.core_expansion > 0.0 || waves) && stations > 1) {
       expansion.emplace();
       expansion->previous_node = result.core_nodes[n > 0 ? n - 1 : n];
       expansion->next_node = result.core_nodes[n + 1 < stations ? n + 1 : n];
@@ -198,9 +224,13 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
       expansion->extent_z = extent_z;
       expansion->ratio = casing.core_expansion;
     }
+    std::optional<element::HighModeWaves> wave_links;
+    if (waves)
+      wave_links = high_mode_waves(*station_sections[n], spec.steel, casing, tributary,
+                                   2.0 * std::max(before, after));
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
         std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link,
-        skips.open_links, expansion)));
+        skips.open_links, expansion, wave_links)));
     if (n == stations / 2)
       result.interior_link = link; // mid-length: a core station
   }

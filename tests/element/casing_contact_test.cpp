@@ -2,6 +2,7 @@
 #include "brb/element/casing_contact.hpp"
 
 #include "support/finite_difference.hpp"
+#include "support/link_tangent.hpp"
 
 #include <gtest/gtest.h>
 
@@ -261,22 +262,9 @@ TEST(CasingContactExpansion, LinkHoldsTheChordNodesOnce) {
                brb::ParameterError);
 }
 
-/// Central differences of a link's nodal forces with respect to every DOF of its nodes
-/// (translations and spins; the link uses translations only), from its trial configuration.
 Eigen::MatrixXd numeric_tangent(CasingContact& contact,
                                 const std::vector<NodeConfiguration>& configuration) {
-  const auto force_of = [&](const Eigen::VectorXd& u) {
-    auto moved = configuration;
-    for (std::size_t n = 0; n < moved.size(); ++n)
-      moved[n].position += u.segment<3>(6 * static_cast<Eigen::Index>(n));
-    Eigen::VectorXd f;
-    Eigen::MatrixXd unused;
-    std::string why;
-    EXPECT_TRUE(contact.evaluate(moved, f, unused, why));
-    return f;
-  };
-  const auto dofs = 6 * static_cast<Eigen::Index>(configuration.size());
-  return test::central_difference_jacobian(force_of, Eigen::VectorXd::Zero(dofs).eval(), 1e-8);
+  return test::numeric_element_tangent(contact, configuration);
 }
 
 TEST(CasingContactExpansion, TangentMatchesFiniteDifferencesOnBothFacesWhileSliding) {

@@ -87,7 +87,8 @@ json girona_casing() {
           {"layer_stiffness", 0.05},
           {"fill_fibers", {2, 12}},
           {"stopper", {{"position", 0.25}}},
-          {"core_expansion", 0.3}};
+          {"core_expansion", 0.3},
+          {"high_mode_waves", {{"crest_factor", 3.5}}}};
 }
 
 /// full_brace() with girona_casing().
@@ -214,6 +215,8 @@ TEST(BraceInput, ReadsTheCasingIntoTheSpec) {
   EXPECT_EQ(casing.fill_fibers_b, 12);
   EXPECT_EQ(casing.stopper_position, 0.25);
   EXPECT_EQ(casing.core_expansion, 0.3);
+  ASSERT_TRUE(casing.high_mode_waves.has_value());
+  EXPECT_EQ(*casing.high_mode_waves, 3.5);
   // (109 - 22) / 2 - 0.5 = 43 mm of mortar all around
   const auto [thickness_y, thickness_z] = casing.mortar_thickness(spec.core_section);
   EXPECT_DOUBLE_EQ(thickness_y, 43.0);
@@ -223,8 +226,8 @@ TEST(BraceInput, ReadsTheCasingIntoTheSpec) {
 TEST(BraceInput, CasingDefaultsAndOneGapForBothDirections) {
   json brace = full_brace();
   brace["casing"] = girona_casing();
-  for (const char* key :
-       {"friction", "layer_stiffness", "fill_fibers", "stopper", "core_expansion"})
+  for (const char* key : {"friction", "layer_stiffness", "fill_fibers", "stopper", "core_expansion",
+                          "high_mode_waves"})
     brace["casing"].erase(key);
   brace["casing"]["gap"] = 1.5;
   const model::BraceSpec spec = parse_brace(brace.dump(), "defaults.json");
@@ -238,6 +241,14 @@ TEST(BraceInput, CasingDefaultsAndOneGapForBothDirections) {
   EXPECT_EQ(spec.casing->fill_fibers_b, defaults.fill_fibers_b);
   EXPECT_EQ(spec.casing->stopper_position, 0.5);
   EXPECT_EQ(spec.casing->core_expansion, 0.0); // off by default (brace_spec.hpp says why)
+  EXPECT_FALSE(spec.casing->high_mode_waves.has_value()); // off by default
+  // true: on at the crest factor 4 of the half-wave's equilibrium; an empty object too
+  brace["casing"]["high_mode_waves"] = true;
+  EXPECT_EQ(parse_brace(brace.dump(), "waves.json").casing->high_mode_waves, 4.0);
+  brace["casing"]["high_mode_waves"] = json::object();
+  EXPECT_EQ(parse_brace(brace.dump(), "waves.json").casing->high_mode_waves, 4.0);
+  brace["casing"]["high_mode_waves"] = false;
+  EXPECT_FALSE(parse_brace(brace.dump(), "waves.json").casing->high_mode_waves.has_value());
 }
 
 TEST(BraceInput, RectangularTubeAroundAPlateTakesAGapPerDirection) {
@@ -791,6 +802,18 @@ INSTANTIATE_TEST_SUITE_P(
                    brace["casing"]["core_expansion"] = -0.1;
                  },
                  "/casing/core_expansion"},
+        BadBrace{"zero_wave_crest_factor",
+                 [](json& brace) {
+                   brace["casing"] = girona_casing();
+                   brace["casing"]["high_mode_waves"]["crest_factor"] = 0.0;
+                 },
+                 "/casing/high_mode_waves/crest_factor"},
+        BadBrace{"unknown_wave_key",
+                 [](json& brace) {
+                   brace["casing"] = girona_casing();
+                   brace["casing"]["high_mode_waves"]["wavelength"] = 50.0;
+                 },
+                 "/casing/high_mode_waves/wavelength"},
         BadBrace{"unknown_stopper_key",
                  [](json& brace) {
                    brace["casing"] = girona_casing();

@@ -33,6 +33,7 @@
 #include "brb/element/element.hpp"
 #include "brb/material/mortar_damage.hpp"
 #include "brb/material/penalty_friction.hpp"
+#include "brb/material/steel_uniaxial.hpp"
 
 #include <array>
 #include <optional>
@@ -78,6 +79,44 @@ struct CoreExpansion {
   void validate() const;
 };
 
+/// Sub-element high-mode waves (issue 4, optional): the friction of the buckling waves that
+/// are too short for the beam chain. A core yielding in compression inside a clearance g
+/// buckles in ever shorter half-waves l, each crest bearing on the casing. Tangent-modulus
+/// theory gives the half-wave (Lin, Chang & Wu 2024, Eng. Struct. 118320, found it fits the
+/// measured waves of flat cores): l = pi r sqrt(E_t / sigma), r the radius of gyration in
+/// the buckling direction, E_t the core's tangent modulus at its compressive stress sigma.
+/// A half-wave between opposite crests spans the lateral offset 2 g, so by the moment
+/// equilibrium of the half-wave (zero moment at the crests) its shear is 2 P g / l and each
+/// crest bears R = 4 P g / l (the crest factor c = 4): per unit length the crests bear
+///   q = c g P / l^2,
+/// pressing both walls alternately (no net lateral force), and the axial friction they add
+/// is kappa q. The beam chain resolves half-waves down to about two of its elements
+/// (measured: 13 half-waves on 24 elements, validation/README.md), and its own links bear
+/// those; the link adds only the part of q below that resolution:
+///   N_w = c g P h max(0, 1 / l^2 - 1 / l_mesh^2),
+/// h the tributary length, l_mesh twice the element length, l not below the core's
+/// thickness in that direction (a wave shorter than the plate is thick is not a beam wave).
+/// sigma and E_t come from the core's steel law driven by the chord strain of the link's
+/// neighbour core nodes (CoreExpansion's chord), taken at the start of the step (lagged by
+/// one step: N_w has no derivative in the tangent, and dE_t/deps would need the law's
+/// second derivative). Tension, or a tangent modulus of E and a long elastic half-wave, give
+/// N_w = 0.
+struct HighModeWaves {
+  material::SteelParameters steel; ///< the core's steel
+  double area = 0.0;               ///< core area A (mm^2)
+  double gyration_radius = 0.0;    ///< r of the buckling direction (mm)
+  double thickness = 0.0;          ///< the core's extent in that direction: the shortest l (mm)
+  double gap = 0.0;                ///< clearance per side in that direction (mm)
+  double tributary_length = 0.0;   ///< h (mm)
+  double resolved_half_wave = 0.0; ///< l_mesh (mm)
+  double crest_factor = 4.0;       ///< c
+
+  /// Throws ParameterError naming the key (area, gyration_radius, ...).
+  void validate() const;
+  /// N_w (N, >= 0) at the core's stress sigma (MPa, compression negative) and tangent E_t.
+  double normal_force(double stress, double tangent_modulus) const;
+};
+
 class CasingContact final : public Element {
 public:
   /// nodes: {core node, casing node}, coincident in the reference configuration up to the
@@ -87,7 +126,8 @@ public:
   CasingContact(std::array<int, 2> nodes, const Vector3& core_position,
                 const Vector3& casing_position, const CasingContactParameters& parameters,
                 bool skip_open_links = true,
-                const std::optional<CoreExpansion>& expansion = std::nullopt);
+                const std::optional<CoreExpansion>& expansion = std::nullopt,
+                const std::optional<HighModeWaves>& waves = std::nullopt);
 
   std::span<const int> nodes() const override { return nodes_; }
   bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
@@ -107,6 +147,8 @@ public:
     const std::array<double, 4>& faces = trial_.face_force;
     return faces[0] + faces[1] + faces[2] + faces[3];
   }
+  /// N_w of the sub-element waves in this step (N; 0 without HighModeWaves).
+  double wave_normal_force() const { return trial_.wave_normal_force; }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
   /// Path control (Element::mark_path_point): the faces' damage at the last path point.
@@ -141,6 +183,12 @@ private:
     // kinematics and forces it is summed on, and the work so far (N mm).
     std::array<double, 4> penetration{};
     double stress_work = 0.0;
+    // Sub-element waves: the core's steel at the chord strain (its stress and tangent feed
+    // the next step's N_w) and this step's N_w.
+    material::SteelStateUniaxial wave_steel;
+    double wave_stress = 0.0;
+    double wave_tangent = 0.0;
+    double wave_normal_force = 0.0;
   };
 
   /// The core's axial strain at the station from the chord of its neighbour nodes, with the
@@ -159,6 +207,8 @@ private:
   /// de/deps per direction: -nu_c h / 2 (mm), y and z.
   Eigen::Vector2d expansion_per_strain_ = Eigen::Vector2d::Zero();
   CasingContactParameters parameters_;
+  std::optional<HighModeWaves> waves_;
+  std::optional<material::SteelUniaxial> wave_steel_; ///< the core's steel law, for waves_
   /// Bearing law of the y faces and of the z faces (their characteristic lengths are the
   /// bearing depths, so that crushing dissipates G_f per unit area of face).
   std::array<material::MortarUniaxial, 2> bearing_;

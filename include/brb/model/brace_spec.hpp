@@ -80,6 +80,10 @@ struct CasingSpec {
   /// opt-in"): on Girona D1 with 8 elements, nu_c = 0.5 sends a bowed core onto a branch
   /// that punches a bearing face through at 0.75 d_y, where nu_c = 0 and 1e-9 do not.
   double core_expansion = 0.0;
+  /// Sub-element high-mode waves (element::HighModeWaves): the friction of the core's
+  /// buckling waves shorter than two core elements. The value is the crest factor c (4: the
+  /// half-wave's moment equilibrium); absent (the default): off.
+  std::optional<double> high_mode_waves;
   /// Unbonding-layer spring per unit length of core (N/mm per mm), always active in both
   /// transverse directions. Absent: kDefaultLayerRatio times the mortar's bearing stiffness
   /// per unit length, E_mortar x (core extent) / (mortar thickness).
