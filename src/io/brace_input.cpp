@@ -284,24 +284,24 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
     }
   }
   if (const auto waves = object.find("high_mode_waves")) {
-    // {"crest_factor": c} (c optional, default 4), or false / true
+    // true / false, or {"crest_factor": c} (c optional)
+    double crest_factor = model::CasingSpec::kDefaultCrestFactor;
     if (waves->json().is_boolean()) {
       if (waves->json().get<bool>())
-        casing.high_mode_waves = 4.0;
+        casing.high_mode_waves = crest_factor;
     } else {
       waves->expect_object({"crest_factor"},
                            "the sub-element high-mode waves: {\"crest_factor\": c} (default 4), "
                            "true or false");
-      casing.high_mode_waves = 4.0;
       if (const auto factor = waves->find("crest_factor")) {
-        const double crest_factor =
+        crest_factor =
             factor->number("crest factor c of the sub-element waves (crest force 4 P g / l at 4)");
         if (!(crest_factor > 0.0 && std::isfinite(crest_factor))) {
           throw factor->error("the crest factor must be > 0 (got " +
                               describe_json_value(factor->json()) + ")");
         }
-        casing.high_mode_waves = crest_factor;
       }
+      casing.high_mode_waves = crest_factor;
     }
   }
   if (const auto layer = object.find("layer_stiffness")) {

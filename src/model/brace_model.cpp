@@ -213,8 +213,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     // The core's expansion from the chord of its neighbour stations (at an end station the
     // station itself is one end); nu_c = 0 leaves the two-node link.
     std::optional<element::CoreExpansion> expansion;
-    const bool waves = casing.high_mode_waves.has_value() && stations > 1;
-    if ((casing.core_expansion > 0.0 || waves) && stations > 1) {
+    if ((casing.core_expansion > 0.0 || casing.high_mode_waves) && stations > 1) {
       expansion.emplace();
       expansion->previous_node = result.core_nodes[n > 0 ? n - 1 : n];
       expansion->next_node = result.core_nodes[n + 1 < stations ? n + 1 : n];
@@ -224,8 +223,8 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
       expansion->extent_z = extent_z;
       expansion->ratio = casing.core_expansion;
     }
-    std::optional<element::HighModeWaves> wave_links;
-    if (waves)
+    std::optional<element::HighModeWaves> wave_links; // they need the chord
+    if (casing.high_mode_waves && expansion)
       wave_links = high_mode_waves(*station_sections[n], spec.steel, casing, tributary,
                                    2.0 * std::max(before, after));
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(

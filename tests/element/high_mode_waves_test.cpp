@@ -2,6 +2,7 @@
 // beam chain's resolution and the friction it adds in a CasingContact.
 #include "brb/element/casing_contact.hpp"
 
+#include "support/expansion_probe.hpp"
 #include "support/finite_difference.hpp"
 #include "support/link_tangent.hpp"
 
@@ -99,77 +100,44 @@ TEST(HighModeWaves, RejectsBadParameters) {
   EXPECT_NO_THROW(plate_waves().validate());
 }
 
-/// A link at an interior station: core node 0 and casing node 1 at the origin, the core
-/// nodes before and after it (2, 3) at -/+ 50 mm along x; gaps 1 mm, so the straight core
-/// never bears: only the waves press on the casing.
-struct WaveProbe {
-  static constexpr double half_chord = 50.0;
-  CasingContactParameters parameters;
-  CasingContact contact;
-  std::vector<NodeConfiguration> nodes;
-  Eigen::VectorXd force;
-  Eigen::MatrixXd tangent;
+/// Gaps of 1 mm, so the straight core of the probe never bears: only the waves press on the
+/// casing.
+CasingContactParameters wave_link() {
+  CasingContactParameters p;
+  p.gap_y = 1.0;
+  p.gap_z = 1.0;
+  p.bearing_area_y = 1000.0;
+  p.bearing_area_z = 6000.0;
+  p.bearing_depth_y = 20.0;
+  p.bearing_depth_z = 20.0;
+  p.mortar = {27600.0, 0.2, 34.5, 3.45, 0.1};
+  p.layer_stiffness = 5.0;
+  p.friction_coefficient = 0.1;
+  p.tangential_stiffness = 1e6;
+  return p;
+}
 
-  static CasingContactParameters link() {
-    CasingContactParameters p;
-    p.gap_y = 1.0;
-    p.gap_z = 1.0;
-    p.bearing_area_y = 1000.0;
-    p.bearing_area_z = 6000.0;
-    p.bearing_depth_y = 20.0;
-    p.bearing_depth_z = 20.0;
-    p.mortar = {27600.0, 0.2, 34.5, 3.45, 0.1};
-    p.layer_stiffness = 5.0;
-    p.friction_coefficient = 0.1;
-    p.tangential_stiffness = 1e6;
-    return p;
-  }
-  static CoreExpansion chord() {
-    CoreExpansion c;
-    c.previous_node = 2;
-    c.next_node = 3;
-    c.previous_position = Vector3(-half_chord, 0.0, 0.0);
-    c.next_position = Vector3(half_chord, 0.0, 0.0);
-    c.extent_y = 60.0;
-    c.extent_z = 10.0;
-    c.ratio = 0.0; // the core keeps its size: no bearing from expansion
-    return c;
-  }
-  WaveProbe()
-      : parameters(link()),
-        contact({0, 1}, Vector3::Zero(), Vector3::Zero(), parameters, true, chord(), plate_waves()),
-        nodes{{Vector3::Zero(), Matrix3::Identity()},
-              {Vector3::Zero(), Matrix3::Identity()},
-              {Vector3(-half_chord, 0.0, 0.0), Matrix3::Identity()},
-              {Vector3(half_chord, 0.0, 0.0), Matrix3::Identity()}} {}
-
-  /// Core node at axial position `slip` relative to the casing, the chord at `strain`.
-  void place(double slip, double strain) {
-    nodes[0].position = Vector3(slip, 0.0, 0.0);
-    nodes[2].position = Vector3(-half_chord * (1.0 + strain), 0.0, 0.0);
-    nodes[3].position = Vector3(half_chord * (1.0 + strain), 0.0, 0.0);
-  }
-  void evaluate() {
-    std::string failure;
-    ASSERT_TRUE(contact.evaluate(nodes, force, tangent, failure)) << failure;
-  }
-};
+/// The interior-station probe around the 60 x 10 mm plate, the core keeping its size
+/// (nu_c = 0: the chord only), with plate_waves().
+test::ExpansionProbe wave_probe() {
+  return test::ExpansionProbe(wave_link(), 60.0, 10.0, true, 0.0, plate_waves());
+}
 
 TEST(HighModeWaves, LinkSlidesAtKappaTimesTheWavesNormalForceFromTheStepBefore) {
   // Reference: Coulomb friction (|T| = kappa N while sliding) on N_w from the core's stress
   // and tangent at the start of the step, those of the uniaxial steel law at the chord's
   // strain; the gaps stay open, so N_w is the whole normal force and there is no lateral
   // force.
-  WaveProbe probe;
+  test::ExpansionProbe probe = wave_probe();
   const HighModeWaves waves = plate_waves();
-  const material::SteelUniaxial steel(waves.steel, 2.0 * WaveProbe::half_chord);
+  const material::SteelUniaxial steel(waves.steel, 2.0 * test::ExpansionProbe::half_chord);
   material::SteelStateUniaxial state;
   double previous_stress = 0.0, previous_tangent = waves.steel.youngs_modulus;
   int sliding_steps = 0;
   for (int step = 1; step <= 20; ++step) {
     const double strain = -0.001 * step; // to 2 %, about 16 times the yield strain
     const double slip = 0.05 * step;     // the core moves along the casing: sliding
-    probe.place(slip, strain);
+    probe.place(Vector3(slip, 0.0, 0.0), strain);
     probe.evaluate();
     const double expected_normal = waves.normal_force(previous_stress, previous_tangent);
     EXPECT_NEAR(probe.contact.wave_normal_force(), expected_normal, 1e-9 * (expected_normal + 1.0))
@@ -193,10 +161,10 @@ TEST(HighModeWaves, LinkSlidesAtKappaTimesTheWavesNormalForceFromTheStepBefore) 
   }
   EXPECT_GT(sliding_steps, 10); // the plastic range was reached and slid through
   // Reversed into tension: the stress becomes tensile, the step after it has no waves.
-  probe.place(1.0, 0.01);
+  probe.place(Vector3(1.0, 0.0, 0.0), 0.01);
   probe.evaluate();
   probe.contact.commit();
-  probe.place(1.1, 0.011);
+  probe.place(Vector3(1.1, 0.0, 0.0), 0.011);
   probe.evaluate();
   EXPECT_EQ(probe.contact.wave_normal_force(), 0.0);
   EXPECT_NEAR(probe.contact.link_force()[0], 0.0, 1e-9);
@@ -206,16 +174,16 @@ TEST(HighModeWaves, TangentMatchesFiniteDifferencesWhileTheWavesHoldTheCore) {
   // Reference: central differences of the nodal forces; N_w is fixed within the step, so the
   // tangent is that of friction at a given normal force, in stick (a small slip after a
   // committed state) and while sliding.
-  WaveProbe probe;
-  probe.place(0.0, -0.01);
+  test::ExpansionProbe probe = wave_probe();
+  probe.place(Vector3(0.0, 0.0, 0.0), -0.01);
   probe.evaluate();
   probe.contact.commit();
-  probe.place(0.0, -0.015);
+  probe.place(Vector3(0.0, 0.0, 0.0), -0.015);
   probe.evaluate();
   probe.contact.commit();
   ASSERT_GT(probe.contact.wave_normal_force(), 0.0);
   for (const double slip : {1e-7, 0.5}) { // stick, then sliding
-    probe.place(slip, -0.0151);
+    probe.place(Vector3(slip, 0.0, 0.0), -0.0151);
     probe.evaluate();
     const Eigen::MatrixXd analytic = probe.tangent;
     const Eigen::MatrixXd numeric = test::numeric_element_tangent(probe.contact, probe.nodes, 1e-9);
@@ -224,7 +192,7 @@ TEST(HighModeWaves, TangentMatchesFiniteDifferencesWhileTheWavesHoldTheCore) {
 }
 
 TEST(HighModeWaves, NeedTheCoreChord) {
-  const CasingContactParameters parameters = WaveProbe::link();
+  const CasingContactParameters parameters = wave_link();
   EXPECT_THROW(CasingContact({0, 1}, Vector3::Zero(), Vector3::Zero(), parameters, true,
                              std::nullopt, plate_waves()),
                brb::ParameterError);

@@ -82,8 +82,9 @@ struct CasingSpec {
   double core_expansion = 0.0;
   /// Sub-element high-mode waves (element::HighModeWaves): the friction of the core's
   /// buckling waves shorter than two core elements. The value is the crest factor c (4: the
-  /// half-wave's moment equilibrium); absent (the default): off.
+  /// half-wave's moment equilibrium, kDefaultCrestFactor); absent (the default): off.
   std::optional<double> high_mode_waves;
+  static constexpr double kDefaultCrestFactor = 4.0;
   /// Unbonding-layer spring per unit length of core (N/mm per mm), always active in both
   /// transverse directions. Absent: kDefaultLayerRatio times the mortar's bearing stiffness
   /// per unit length, E_mortar x (core extent) / (mortar thickness).
