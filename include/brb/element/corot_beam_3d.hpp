@@ -57,8 +57,17 @@ public:
     double axial_force = 0.0;
     bool converged = false;
     for (int iteration = 0; iteration < kNewtonAxialIterations && !converged; ++iteration) {
-      if (!evaluate_points(curvature, failure))
-        return false;
+      if (!evaluate_points(curvature, failure)) {
+        if (iteration == 0)
+          return false;
+        // A Newton iterate left the laws' domain: a point whose fibers are all near their
+        // saturated stress has an axial stiffness near zero, and (N - N_k) / a_k throws its
+        // strain far away (measured: CB225's core at its Chaboche saturation, 1.75 %
+        // shortening, stopped the whole run). The bracketed solve keeps every strain inside
+        // a bracket.
+        failure.clear();
+        break;
+      }
       converged = equilibrium_reached(elongation, axial_force);
       if (!converged) {
         for (std::size_t k = 0; k < points; ++k)
