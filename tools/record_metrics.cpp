@@ -98,33 +98,22 @@ int run(int argc, char** argv) {
   // AISC 341 F4.2a from the scored cycles: beta = Pmax / Tmax and Tmax (omega = Tmax / Pysc),
   // the largest over the cycles, for the test and for the model at the same points.
   nlohmann::ordered_json per_cycle = nlohmann::ordered_json::array();
-  double test_beta = 0.0, model_beta = 0.0, test_tmax = 0.0, model_tmax = 0.0;
   for (const auto& cycle : comparison.cycles) {
     if (!cycle.scored)
       continue;
-    const auto first = test_force.begin() + static_cast<std::ptrdiff_t>(cycle.span.first);
-    const auto last = test_force.begin() + static_cast<std::ptrdiff_t>(cycle.span.last) + 1;
-    const double cycle_test_tmax = *std::max_element(first, last);
-    const double cycle_model_tmax =
-        *std::max_element(model_force.begin() + (first - test_force.begin()),
-                          model_force.begin() + (last - test_force.begin()));
-    test_beta = std::max(test_beta, cycle.test_beta);
-    model_beta = std::max(model_beta, cycle.model_beta);
-    test_tmax = std::max(test_tmax, cycle_test_tmax);
-    model_tmax = std::max(model_tmax, cycle_model_tmax);
     per_cycle.push_back({{"amplitude_mm", std::max(std::abs(deformation[cycle.span.first]),
                                                    std::abs(deformation[cycle.span.last]))},
                          {"test_energy", cycle.test_energy},
                          {"model_energy", cycle.model_energy},
                          {"test_beta", cycle.test_beta},
                          {"model_beta", cycle.model_beta},
-                         {"test_tmax", cycle_test_tmax},
-                         {"model_tmax", cycle_model_tmax}});
+                         {"test_tmax", cycle.test_peaks.tension},
+                         {"model_tmax", cycle.model_peaks.tension}});
   }
-  out["largest_test_beta"] = test_beta;
-  out["largest_model_beta"] = model_beta;
-  out["largest_test_tmax"] = test_tmax;
-  out["largest_model_tmax"] = model_tmax;
+  out["largest_test_beta"] = comparison.largest_test_beta;
+  out["largest_model_beta"] = comparison.largest_model_beta;
+  out["largest_test_tmax"] = comparison.largest_test_tension;
+  out["largest_model_tmax"] = comparison.largest_model_tension;
   out["scored"] = per_cycle;
   std::cout << out.dump(1) << "\n";
   return 0;

@@ -1,5 +1,6 @@
 #include "brb/validation/metric_kinds.hpp"
 
+#include "brb/io/csv.hpp"
 #include "brb/validation/record_comparison.hpp"
 
 #include <algorithm>
@@ -467,6 +468,51 @@ MetricValue evaluate_record_beta(const Json& metric, const RunData& run) {
       [](const CycleComparison& c) { return c.beta_difference(); });
 }
 
+/// |model - reference| of an AISC 341 adjustment factor from a test (F4.2a, as `brb check`
+/// takes it: the largest over the cycles), `model` and `reference` read from the comparison's
+/// scored cycles, with both values in the note.
+template <typename Model, typename Reference>
+MetricValue record_factor_difference(const RunData& run, Model model, Reference reference) {
+  const RecordLookup lookup = compare_run_with_record(run);
+  if (!lookup.comparison)
+    return {std::nullopt, lookup.note};
+  const RecordComparison& comparison = *lookup.comparison;
+  if (comparison.scored_cycles == 0)
+    return {std::nullopt, lookup.note + ": no cycle scored"};
+  const double model_value = model(comparison);
+  const double reference_value = reference(comparison);
+  std::string note = lookup.note + ", " + std::to_string(comparison.scored_cycles) +
+                     " cycles: model " + io::significant(model_value, 4) + ", reference " +
+                     io::significant(reference_value, 4);
+  if (!(model_value > 0.0))
+    return {std::nullopt, note + ": no scored cycle of the model has a tension peak"};
+  return {std::abs(model_value - reference_value), note};
+}
+
+/// beta = the largest Pmax / Tmax over the scored cycles.
+MetricValue evaluate_record_largest_beta(const Json&, const RunData& run) {
+  return record_factor_difference(
+      run, [](const RecordComparison& c) { return c.largest_model_beta; },
+      [](const RecordComparison& c) { return c.largest_test_beta; });
+}
+
+void check_record_largest_omega(const io::JsonValue& metric) {
+  const io::JsonValue pysc =
+      metric.at("pysc", "the core's specified yield force A_c f_ysc (N), omega's denominator");
+  const double value = pysc.number("the core's specified yield force A_c f_ysc (N)");
+  if (!(value > 0.0 && std::isfinite(value)))
+    throw pysc.error("the core's specified yield force A_c f_ysc must be > 0 (N)");
+}
+
+/// omega = the largest tension peak over the scored cycles over Pysc.
+MetricValue evaluate_record_largest_omega(const Json& metric, const RunData& run) {
+  const double pysc = metric.at("pysc").get<double>();
+  const auto omega = [pysc](double tension) { return tension / pysc; };
+  return record_factor_difference(
+      run, [&](const RecordComparison& c) { return omega(c.largest_model_tension); },
+      [&](const RecordComparison& c) { return omega(c.largest_test_tension); });
+}
+
 void check_record_peak_force(const io::JsonValue& metric) {
   if (const auto direction = metric.find("direction"))
     one_of(*direction, "direction", {"tension", "compression"});
@@ -547,8 +593,8 @@ MetricValue evaluate_record_failure_mode(const Json& metric, const RunData& run)
                                              (tolerance == 1 ? "" : "s") + ")"};
 }
 
-const std::array<MetricKind, 15>& registry() {
-  static const std::array<MetricKind, 15> kinds{{
+const std::array<MetricKind, 17>& registry() {
+  static const std::array<MetricKind, 17> kinds{{
       {"cycle_energy",
        "loop energy (N mm) of cycle k (\"cycle\") or of the first cycle at an amplitude "
        "(\"amplitude_dy\")",
@@ -621,6 +667,20 @@ const std::array<MetricKind, 15>& registry() {
        false,
        check_record_cycle_kind,
        evaluate_record_beta},
+      {"record_largest_beta",
+       "|model - reference| of AISC 341's beta from a test: the largest Pmax / Tmax over the "
+       "scored cycles",
+       {},
+       false,
+       check_nothing,
+       evaluate_record_largest_beta},
+      {"record_largest_omega",
+       "|model - reference| of AISC 341's omega from a test: the largest tension peak over the "
+       "scored cycles over \"pysc\" (N, the core's A_c f_ysc)",
+       {"pysc"},
+       false,
+       check_record_largest_omega,
+       evaluate_record_largest_omega},
       {"record_peak_force",
        "largest relative error of the peak force per scored cycle (or of \"compared_cycle\"), "
        "in \"direction\" tension or compression, or the larger of both",

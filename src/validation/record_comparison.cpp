@@ -165,6 +165,12 @@ RecordComparison compare_with_record(std::span<const double> deformation,
     const double beta = cycle.beta_difference();
     result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
                                                   : std::max(result.max_beta_difference, beta);
+    // std::max keeps the first argument when the second is NaN
+    result.largest_test_beta = std::max(result.largest_test_beta, cycle.test_beta);
+    result.largest_model_beta = std::max(result.largest_model_beta, cycle.model_beta);
+    result.largest_test_tension = std::max(result.largest_test_tension, cycle.test_peaks.tension);
+    result.largest_model_tension =
+        std::max(result.largest_model_tension, cycle.model_peaks.tension);
   }
 
   double largest_test_work = 0.0;

@@ -2,6 +2,7 @@
 // hand: rectangle-shaped loops (loop energy = width x height of the rectangle), bilinear
 // loading branches (offset yield force in closed form), and the judging of values against
 // references, bounds and flags.
+#include "brb/io/json_input.hpp"
 #include "brb/validation/metric_kinds.hpp"
 #include "brb/validation/specimen_run.hpp"
 
@@ -105,21 +106,34 @@ TEST(ResidualCompressionRatio, ForceAtTheLargestShorteningOverThePeak) {
   EXPECT_NEAR(*ratio.value, 0.05, 1e-12);
 }
 
+/// The loops as a lab record (the reversal threshold of the specimens, 0.1 dy = 0.1 mm), and
+/// the model: the same loops with the tension force times `tension_factor` and the
+/// compression force times `compression_factor`.
+struct RecordAndModel {
+  brb::validation::RecordSeries record;
+  CyclicTestResult model;
+};
+
+RecordAndModel record_and_scaled_model(const CyclicTestResult& loops, double tension_factor,
+                                       double compression_factor) {
+  RecordAndModel pair{{}, loops};
+  for (std::size_t k = 0; k < loops.steps.size(); ++k) {
+    const double force = loops.steps[k].force;
+    pair.record.deformation.push_back(loops.steps[k].deformation);
+    pair.record.test_force.push_back(force);
+    pair.model.steps[k].force = force * (force > 0.0 ? tension_factor : compression_factor);
+  }
+  pair.record.reversal_threshold = 0.1;
+  return pair;
+}
+
 TEST(RecordKinds, CompareTheModelWithItsLabRecordAtTheRecordsPoints) {
   // Reference (definition, record_comparison.hpp): a model force 10 % above the test force
   // everywhere has a normalised RMS error of 0.1, loop energies 10 % high and the same beta.
   // Points marked NaN in the record are not compared (here a model spike of 1e9 N).
-  const CyclicTestResult loops = three_rectangles();
-  brb::validation::RecordSeries record;
-  CyclicTestResult model = loops;
-  for (std::size_t k = 0; k < loops.steps.size(); ++k) {
-    record.deformation.push_back(loops.steps[k].deformation);
-    record.test_force.push_back(loops.steps[k].force);
-    model.steps[k].force = 1.1 * loops.steps[k].force;
-  }
+  auto [record, model] = record_and_scaled_model(three_rectangles(), 1.1, 1.1);
   record.test_force[3] = std::nan("");
   model.steps[3].force = 1e9;
-  record.reversal_threshold = 0.1;
   const RunData run{model, kYieldDeform, kForce, 100.0, &record};
   const auto value = [&](const char* kind) {
     return find_metric_kind(kind)->evaluate(json{{"kind", kind}}, run);
@@ -136,6 +150,41 @@ TEST(RecordKinds, CompareTheModelWithItsLabRecordAtTheRecordsPoints) {
   // Without a record the kinds have no value and say why.
   const RunData bare{model, kYieldDeform, kForce, 100.0};
   EXPECT_FALSE(find_metric_kind("record_nrms")->evaluate(json::object(), bare).value);
+}
+
+TEST(RecordKinds, AiscAdjustmentFactorsAreTheLargestOverTheCycles) {
+  // Reference (definition, AISC 341 F4.2a as `brb check` takes it): beta = the largest
+  // Pmax / Tmax over the scored cycles, omega = the largest Tmax over Pysc. The record is the
+  // three rectangles (largest tension 2 F, in the cycles that hold rectangle 2's tension
+  // side); the model's tension is 10 % higher and its compression 32 % higher everywhere, so
+  // every cycle's beta is 1.2 times the record's (1.32 / 1.1) and the largest tension 2.2 F.
+  const auto [record, model] = record_and_scaled_model(three_rectangles(), 1.1, 1.32);
+  const RunData run{model, kYieldDeform, kForce, 100.0, &record};
+  const MetricValue beta =
+      find_metric_kind("record_largest_beta")->evaluate(json{{"kind", "record_largest_beta"}}, run);
+  ASSERT_TRUE(beta.value) << beta.note;
+  const MetricValue per_cycle =
+      find_metric_kind("record_beta")->evaluate(json{{"kind", "record_beta"}}, run);
+  ASSERT_TRUE(per_cycle.value) << per_cycle.note;
+  // the largest record beta B: model 1.2 B, so the difference is 0.2 B, and the per-cycle
+  // differences 0.2 beta_k are at most that
+  EXPECT_NEAR(*beta.value, *per_cycle.value, 1e-12);
+  EXPECT_GT(*beta.value, 0.2 - 1e-12); // every beta here is >= 1
+  const double pysc = 800.0;
+  const json omega_metric{{"kind", "record_largest_omega"}, {"pysc", pysc}};
+  const MetricValue omega = find_metric_kind("record_largest_omega")->evaluate(omega_metric, run);
+  ASSERT_TRUE(omega.value) << omega.note;
+  EXPECT_NEAR(*omega.value, 0.1 * 2.0 * kForce / pysc, 1e-12);
+  EXPECT_NE(omega.note.find("reference 2.5"), std::string::npos) << omega.note;
+  // omega needs Pysc
+  const auto* omega_kind = find_metric_kind("record_largest_omega");
+  EXPECT_THROW(omega_kind->check(brb::io::JsonValue(json{{"kind", "record_largest_omega"}},
+                                                    "metrics.json", "/metrics/0")),
+               brb::io::InputError);
+  EXPECT_THROW(
+      omega_kind->check(brb::io::JsonValue(json{{"kind", "record_largest_omega"}, {"pysc", -1.0}},
+                                           "metrics.json", "/metrics/0")),
+      brb::io::InputError);
 }
 
 TEST(CycleEnergy, RectangleLoopAreaIsWidthTimesHeight) {

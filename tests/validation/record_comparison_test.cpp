@@ -97,6 +97,13 @@ TEST(RecordComparison, EnergyErrorAndBetaOfKnownLoops) {
   const RecordComparison symmetric =
       compare_with_record(test.deformation, test.force, symmetric_force, {0.05, 0.05});
   EXPECT_NEAR(symmetric.max_beta_difference, 0.2, 1e-12);
+  // AISC 341's factors from the test (F4.2a: the largest over the cycles): beta 1.2 both for
+  // the test and the scaled model, 1 for the symmetric one; Tmax Fy and 0.9 Fy
+  EXPECT_NEAR(comparison.largest_test_beta, 1.2, 1e-12);
+  EXPECT_NEAR(comparison.largest_model_beta, 1.2, 1e-12);
+  EXPECT_NEAR(symmetric.largest_model_beta, 1.0, 1e-12);
+  EXPECT_NEAR(comparison.largest_test_tension, fy, 1e-12);
+  EXPECT_NEAR(comparison.largest_model_tension, 0.9 * fy, 1e-12);
 }
 
 TEST(RecordComparison, NearlyElasticCyclesBelowTheEnergyFloorAreNotScored) {

@@ -119,6 +119,14 @@ struct RecordComparison {
   /// cycles (0 without one).
   double max_peak_tension_error = 0.0;
   double max_peak_compression_error = 0.0;
+  /// AISC 341's adjustment factors from a test (F4.2a, as `brb check` takes them): the
+  /// largest beta = Pmax / Tmax and the largest Tmax (omega = Tmax / Pysc) over the scored
+  /// cycles, for the test and for the model at the same points (0 without a scored cycle; a
+  /// cycle without tension, whose beta is undefined, does not count).
+  double largest_test_beta = 0.0;
+  double largest_model_beta = 0.0;
+  double largest_test_tension = 0.0;  ///< N
+  double largest_model_tension = 0.0; ///< N
   /// Excursions (half cycles), scored when |test work| reaches the energy floor's fraction of
   /// the largest |test work| of an excursion: the metrics of a protocol that closes no cycle.
   std::vector<ExcursionComparison> excursions;
