@@ -76,7 +76,9 @@ struct NewtonSettings {
   ///   sum |W_step - dE_step| <= energy_tolerance * sum |W_step|.
   /// Cutting stops after `energy_halvings` cuts (the step is then accepted and counted
   /// in StepReport::energy_tolerance_missed). Steps that pass a limit point by
-  /// pseudo-transient continuation book their jump separately and are not cut.
+  /// pseudo-transient continuation book their jump separately and are not cut. An error
+  /// such steps commit beyond the budget is carried, not repaid: while it stands, a later
+  /// step passes if its own error is within its share, tolerance * |W_step|.
   /// The default, 1e-2, is a guard, not an accuracy target: a well-resolved run misfits by
   /// 1e-5 to 1e-3 and is never cut, but a converged step that lands on a far branch whose
   /// energy the loading could not have supplied (measured: Girona D1, where Newton steps
@@ -335,7 +337,9 @@ private:
   /// NewtonSettings::balance_tolerance (always true when the control is off).
   bool within_balance_tolerance(const StepEnergy& step) const;
   /// The test both controls share: the committed running error plus the step's error
-  /// (step.work - change) stays within `tolerance` times the gross work with the step.
+  /// (step.work - change) stays within `tolerance` times the gross work with the step; or,
+  /// where the committed error already exceeds tolerance times the gross work (a jump, a
+  /// step whose cuts ran out), the step's own error is within tolerance times its |work|.
   bool within_budget(double committed_error, double change, double tolerance,
                      const StepEnergy& step) const;
   /// Path control of softening laws (the third test of the far-branch control): marks every
