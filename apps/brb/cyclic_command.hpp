@@ -32,6 +32,9 @@ struct CyclicCommand {
   /// Also write DIR/shape.csv: the deformed shape after these steps (hysteresis.csv's step
   /// numbers) and after the last converged step.
   std::optional<std::vector<int>> shape_steps;
+  /// Print a progress line on the notes stream at most every this many seconds of wall time
+  /// (0: after every step) and after the last step; none: no progress lines.
+  std::optional<double> progress_interval;
 };
 
 /// The brace's name in the outputs: its "name", or the brace file's name without extension.

@@ -98,6 +98,8 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
     }
     const bool cycle_ends = k + 1 == deformation.size() || cycle[k + 1] != step.cycle;
     hysteresis_.append(step, cycle_ends, cycle_amplitude);
+    if (observer_)
+      observer_(step);
   }
   return true;
 }
@@ -179,10 +181,12 @@ void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& 
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude, NewtonSettings settings,
-                                 bool record_history, std::optional<std::vector<int>> shape_steps) {
+                                 bool record_history, std::optional<std::vector<int>> shape_steps,
+                                 StepObserver observer) {
   CyclicTest test(brace, settings, record_history);
   if (shape_steps)
     test.record_shapes_at(std::move(*shape_steps));
+  test.observe_steps(std::move(observer));
   if (deformation.size() > 1)
     test.follow(deformation.subspan(1), std::span<const int>(cycle).subspan(1), cycle_amplitude);
   CyclicTestResult result = test.result();

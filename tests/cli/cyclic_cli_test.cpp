@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -368,6 +369,62 @@ TEST(CyclicCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
               1e-9 * previous[2]);
   EXPECT_GT(previous[2], 0.0);
   EXPECT_NE(run.out.find("element_history.csv"), std::string::npos) << run.out;
+}
+
+TEST(CyclicCli, ProgressPrintsALineAfterEveryStepAtIntervalZero) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace(/*straight=*/true).dump(2));
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump(2));
+  const auto output = scratch.path() / "results";
+  const CliRun run = run_brb(cyclic_arguments(brace, protocol, output, "--progress 0"));
+  ASSERT_EQ(run.exit_code, 0) << run.err << run.out;
+  const std::vector<HysteresisRow> rows = read_hysteresis(output / "hysteresis.csv");
+  std::vector<std::string> progress;
+  for (const std::string& line : lines_of(run.err)) {
+    if (line.rfind("brb: cyclic: step ", 0) == 0)
+      progress.push_back(line);
+  }
+  // one line per step after the initial point, each naming the step, the total and the
+  // step's deformation and force as hysteresis.csv has them
+  const std::size_t steps = rows.size() - 1;
+  ASSERT_EQ(progress.size(), steps) << run.err;
+  long long previous_substeps = 0;
+  for (std::size_t k = 1; k <= steps; ++k) {
+    int step = 0, total = 0;
+    long long substeps = 0;
+    double percent = 0.0, deformation = 0.0, force = 0.0, seconds = 0.0;
+    ASSERT_EQ(std::sscanf(progress[k - 1].c_str(),
+                          "brb: cyclic: step %d of %d (%lf %%), deformation %lf mm, force %lf N, "
+                          "%lld substeps, %lf s",
+                          &step, &total, &percent, &deformation, &force, &substeps, &seconds),
+              7)
+        << progress[k - 1];
+    EXPECT_EQ(step, static_cast<int>(k));
+    EXPECT_EQ(total, static_cast<int>(steps));
+    // printed to 0.1 %: off by at most half of that
+    EXPECT_NEAR(percent, 100.0 * static_cast<double>(k) / static_cast<double>(steps), 0.05 + 1e-9);
+    EXPECT_NEAR(deformation, rows[k].deformation, 5e-4 + 1e-3 * std::abs(rows[k].deformation));
+    EXPECT_NEAR(force, rows[k].force, 0.5 + 1e-9 * std::abs(rows[k].force));
+    // the running count of substeps grows by the step's own, as hysteresis.csv lists them
+    EXPECT_EQ(substeps - previous_substeps, rows[k].substeps);
+    previous_substeps = substeps;
+    EXPECT_GE(seconds, 0.0);
+  }
+  EXPECT_NE(progress.back().find("(100.0 %)"), std::string::npos) << progress.back();
+}
+
+TEST(CyclicCli, ProgressMustBeANumberOfSeconds) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump());
+  const auto output = scratch.path() / "results";
+  for (const char* value : {"-1", "abc", "inf"}) {
+    const CliRun run =
+        run_brb(cyclic_arguments(brace, protocol, output, std::string("--progress=") + value));
+    EXPECT_EQ(run.exit_code, 2) << value << ": " << run.err;
+    EXPECT_NE(run.err.find("--progress"), std::string::npos) << run.err;
+  }
+  EXPECT_EQ(scratch.entries().size(), 2u); // nothing written
 }
 
 TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {

@@ -7,6 +7,7 @@
 #include "brb/analysis/static_analysis.hpp"
 #include "brb/model/brace_model.hpp"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,9 @@ struct CyclicStep {
   double max_lateral_displacement = 0.0; ///< mm, largest lateral motion of a node
   int substeps = 1;                      ///< substeps the step needed
 };
+
+/// Called after every converged step of a cyclic test, e.g. to report progress on a long run.
+using StepObserver = std::function<void(const CyclicStep&)>;
 
 /// The element outputs after a step (issue 4 "histories when asked"): the running maxima and
 /// flags of BraceIndicators up to that step, with the step's own core strain and energy.
@@ -129,6 +133,9 @@ public:
   /// converged step. Call before follow().
   void record_shapes_at(std::vector<int> steps);
 
+  /// Calls `observer` after every converged step from now on (none: stop calling).
+  void observe_steps(StepObserver observer) { observer_ = std::move(observer); }
+
   /// The deformed shape after the last converged step, labelled with `step`.
   std::vector<BraceShapeNode> shape(int step) const;
 
@@ -144,7 +151,8 @@ private:
   StaticAnalysis analysis_;
   BraceIndicatorTracker tracker_;
   bool record_history_ = false;
-  std::optional<std::vector<int>> shape_steps_;      ///< sorted; set by record_shapes_at
+  std::optional<std::vector<int>> shape_steps_; ///< sorted; set by record_shapes_at
+  StepObserver observer_;
   std::optional<std::pair<int, int>> yielding_ends_; ///< for the mean core strain
   CyclicTestResult result_;
   HysteresisAccumulator hysteresis_{result_};
@@ -161,11 +169,13 @@ void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& 
 /// Drives `brace` through the deformation history (mm; first point 0), one analysis step per
 /// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
 /// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
-/// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at.
+/// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at;
+/// `observer`: called after every converged step.
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,
                                  NewtonSettings settings = {}, bool record_history = false,
-                                 std::optional<std::vector<int>> shape_steps = std::nullopt);
+                                 std::optional<std::vector<int>> shape_steps = std::nullopt,
+                                 StepObserver observer = {});
 
 } // namespace brb::analysis
