@@ -65,6 +65,7 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
   summary["element"] =
       Json{{"max_steel_damage", indicators.max_steel_damage},
            {"max_mortar_damage", indicators.max_mortar_damage},
+           {"max_bearing_damage", indicators.max_bearing_damage},
            {"max_core_lateral_displacement", indicators.max_core_lateral_displacement},
            {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
            {"max_buckling_half_waves", indicators.max_buckling_half_waves},

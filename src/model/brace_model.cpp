@@ -120,6 +120,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   // stations: core nodes of the elements inside the casing, from start to end; the section
   // the mortar bears on at each (a station between a transition and a core element: the core)
   CasingModel result;
+  result.steel_tube = casing.steel_tube;
   std::vector<const SectionSpec*> station_sections;
   std::vector<const SectionSpec*> segment_sections; // casing element n: stations n, n + 1
   for (std::size_t e = 0; e < brace.beams.size(); ++e) {

@@ -273,8 +273,9 @@ MetricValue evaluate_flag(const Json& metric, const RunData& run) {
   return {raised ? 1.0 : 0.0, flag};
 }
 
-constexpr std::array<std::string_view, 6> kIndicators{"max_steel_damage",
+constexpr std::array<std::string_view, 7> kIndicators{"max_steel_damage",
                                                       "max_mortar_damage",
+                                                      "max_bearing_damage",
                                                       "max_core_lateral_displacement",
                                                       "max_casing_lateral_displacement",
                                                       "max_buckling_half_waves",
@@ -283,7 +284,7 @@ constexpr std::array<std::string_view, 6> kIndicators{"max_steel_damage",
 void check_max_indicator(const io::JsonValue& metric) {
   one_of(metric.at("indicator", "the indicator of summary.json's element block"), "indicator",
          {kIndicators[0], kIndicators[1], kIndicators[2], kIndicators[3], kIndicators[4],
-          kIndicators[5]});
+          kIndicators[5], kIndicators[6]});
 }
 
 /// A largest-over-the-run indicator of summary.json's element block.
@@ -295,6 +296,8 @@ MetricValue evaluate_max_indicator(const Json& metric, const RunData& run) {
     value = indicators.max_steel_damage;
   else if (name == "max_mortar_damage")
     value = indicators.max_mortar_damage;
+  else if (name == "max_bearing_damage")
+    value = indicators.max_bearing_damage;
   else if (name == "max_core_lateral_displacement")
     value = indicators.max_core_lateral_displacement;
   else if (name == "max_casing_lateral_displacement")

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 namespace brb::analysis {
@@ -132,6 +133,82 @@ TEST_F(GlobalBucklingFlag, NoBuckleWhileTheBraceIsStretched) {
   observe_casing_bow(bow, 1.0 * dy(), 1.0 * py());
   observe_casing_bow(bow, 0.5 * dy(), 0.2 * py());
   EXPECT_FALSE(tracker_.indicators().global_buckling);
+}
+
+/// Evaluates `element` with each node at its initial place plus `offset(node)` and commits.
+template <class Offset>
+void strain_element(element::Element& element, const model::Model& model, const Offset& offset) {
+  std::vector<element::NodeConfiguration> configuration;
+  for (const int node : element.nodes())
+    configuration.push_back({model.coordinates(node) + offset(node), element::Matrix3::Identity()});
+  Eigen::VectorXd force;
+  Eigen::MatrixXd tangent;
+  std::string failure;
+  ASSERT_TRUE(element.evaluate(configuration, force, tangent, failure)) << failure;
+  element.commit();
+}
+
+/// The indicators after the first casing beam of `spec`'s brace is stretched by 1 %: its fill
+/// fibers crack through (tension strain 80 times ft / E, damage near 1) while no station bears.
+BraceIndicators indicators_with_the_casing_stretched(const model::BraceSpec& spec) {
+  model::BraceModel brace = model::build_brace_model(spec);
+  auto& beam = *brace.casing->beams.front();
+  const int far_node = beam.nodes()[1];
+  const double length =
+      (brace.model.coordinates(far_node) - brace.model.coordinates(beam.nodes()[0])).norm();
+  strain_element(beam, brace.model, [&](int node) {
+    return node == far_node ? element::Vector3(0.01 * length * brace.axes.col(0))
+                            : element::Vector3::Zero();
+  });
+  BraceIndicatorTracker tracker(brace, brace.model);
+  tracker.observe(
+      [&](int node) -> const element::Vector3& { return brace.model.coordinates(node); }, 0.0, 0.0);
+  return tracker.indicators();
+}
+
+TEST(CasingFailureFlag, FillCrackedInASteelTubeIsNoCasingFailure) {
+  // Reference (the flag's rule, README "element.casing_failure"): in a steel tube, casing
+  // failure is the mortar under a station crushed through; the fill's cracking, which
+  // max_mortar_damage shows, is not (the tube still holds the core).
+  const BraceIndicators indicators =
+      indicators_with_the_casing_stretched(test::girona_d3_restrained(8));
+  EXPECT_GE(indicators.max_mortar_damage, kCrushedDamage);
+  EXPECT_EQ(indicators.max_bearing_damage, 0.0);
+  EXPECT_FALSE(indicators.casing_failure);
+}
+
+TEST(CasingFailureFlag, AMortarOnlyCasingCrackedThroughIsACasingFailure) {
+  // The same casing without its steel tube (an outline, as the thesis's small BRB): the
+  // cracked fill is the casing itself.
+  model::BraceSpec spec = test::girona_d3_restrained(8);
+  spec.casing->steel_tube = false;
+  spec.casing->tube.wall = 0.0;
+  const BraceIndicators indicators = indicators_with_the_casing_stretched(spec);
+  EXPECT_GE(indicators.max_mortar_damage, kCrushedDamage);
+  EXPECT_EQ(indicators.max_bearing_damage, 0.0);
+  EXPECT_TRUE(indicators.casing_failure);
+}
+
+TEST(CasingFailureFlag, MortarCrushedUnderAStationIsACasingFailure) {
+  // The core pushed sideways into the mortar at a station by the gap plus half the mortar's
+  // thickness (bearing strain 0.5, hundreds of times fc / E): the bearing face is crushed.
+  model::BraceModel brace = model::build_brace_model(test::girona_d3_restrained(8));
+  const model::CasingModel& casing = *brace.casing;
+  const std::size_t station = casing.contacts.size() / 2;
+  auto& link = *casing.contacts[station];
+  const int core_node = casing.core_nodes[station];
+  const double gap = casing.interior_link.gap_z;
+  const double push = gap + 0.5 * casing.interior_link.bearing_depth_z;
+  strain_element(link, brace.model, [&](int node) {
+    return node == core_node ? element::Vector3(push * brace.axes.col(2))
+                             : element::Vector3::Zero();
+  });
+  BraceIndicatorTracker tracker(brace, brace.model);
+  tracker.observe(
+      [&](int node) -> const element::Vector3& { return brace.model.coordinates(node); }, 0.0, 0.0);
+  EXPECT_GE(tracker.indicators().max_bearing_damage, kCrushedDamage);
+  EXPECT_EQ(tracker.indicators().max_mortar_damage, tracker.indicators().max_bearing_damage);
+  EXPECT_TRUE(tracker.indicators().casing_failure);
 }
 
 } // namespace

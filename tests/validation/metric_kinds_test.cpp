@@ -289,12 +289,16 @@ TEST(FlagAndIndicator, ReadTheBraceIndicators) {
   CyclicTestResult result = three_rectangles();
   result.indicators.casing_failure = true;
   result.indicators.max_mortar_damage = 0.25;
+  result.indicators.max_bearing_damage = 0.125;
   result.indicators.max_buckling_half_waves = 7;
   EXPECT_EQ(*evaluate({{"kind", "flag"}, {"flag", "casing_failure"}}, result).value, 1.0);
   EXPECT_EQ(*evaluate({{"kind", "flag"}, {"flag", "global_buckling"}}, result).value, 0.0);
   EXPECT_EQ(
       *evaluate({{"kind", "max_indicator"}, {"indicator", "max_mortar_damage"}}, result).value,
       0.25);
+  EXPECT_EQ(
+      *evaluate({{"kind", "max_indicator"}, {"indicator", "max_bearing_damage"}}, result).value,
+      0.125);
   EXPECT_EQ(*evaluate({{"kind", "max_indicator"}, {"indicator", "max_buckling_half_waves"}}, result)
                  .value,
             7.0);

@@ -47,6 +47,8 @@ struct CasingModel {
   std::size_t stopper_station = 0;                ///< index into nodes
   element::CasingContactParameters interior_link; ///< link parameters of an interior station
   element::SpringStiffness stopper_stiffness{};
+  /// false for a mortar-only casing (CasingSpec::steel_tube): its fill fibers are the casing
+  bool steel_tube = true;
 };
 
 /// Where a brace lies: the start node's position and the axes (columns: brace axis from
