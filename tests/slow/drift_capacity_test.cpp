@@ -50,14 +50,17 @@ json brace(double wall, double gap) {
 }
 
 /// Drift capacity of the brace in a 45 degree diagonal of its own scale (h = b = 600 / sqrt 2
-/// mm), searched from the 1 % minimum to 5 % with a resolution of 1 %.
+/// mm), searched from the 1 % minimum to 10 % with a resolution of 1 %. (The search ended at
+/// 5 % until session 20, when the casing-failure flag stopped counting the tube's cracked
+/// fill: the base brace's capacity rose from under 5 % to 8.3 %, limited by completion,
+/// stiffness and instability, and 5 % no longer bracketed it.)
 DriftCapacity capacity_of(const json& brace_json) {
   const testing::ScratchDirectory scratch;
   scratch.write("brace.json", brace_json.dump());
   const json check = {{"brace", "brace.json"},
                       {"story", {{"height", 424.264}, {"bay_width", 424.264}}},
                       {"design_drift", {{"ratio", 0.01}}},
-                      {"drift_capacity", {{"resolution", 0.01}, {"upper", 0.05}}}};
+                      {"drift_capacity", {{"resolution", 0.01}, {"upper", 0.10}}}};
   const CheckSpec spec = read_check(scratch.write("check.json", check.dump()));
   const CheckResult result = run_check(spec);
   EXPECT_TRUE(result.drift_capacity.has_value());

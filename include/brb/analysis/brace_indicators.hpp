@@ -27,7 +27,7 @@ struct BraceIndicators {
   /// Largest damage of the mortar under a station (the contact links' bearing faces), the
   /// crushing that casing_failure flags. The fill fibers of the casing beams are left out:
   /// they crack in tension as soon as the casing bends (strain ft / E, about 1.3e-4), which
-  /// is not a casing failure.
+  /// in a steel tube is not a casing failure (in a mortar-only casing it is: the flag's rule).
   double max_bearing_damage = 0.0;
   double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
   double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
