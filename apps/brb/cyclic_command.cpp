@@ -144,43 +144,6 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
     out << "        " << files.shape->string() << "\n";
 }
 
-} // namespace
-
-/// The brace's name in the outputs: its "name", or the brace file's name without extension.
-std::string brace_name(const model::BraceSpec& spec, const std::filesystem::path& file) {
-  return spec.name.empty() ? file.stem().string() : spec.name;
-}
-
-/// The brace's finite element model: the expanded full model, or the truss for
-/// "element": {"fidelity": "truss"} (the element mode only matters in frames). A ParameterError
-/// (inconsistent geometry, named by its key in the brace schema, e.g. "core/yielding_length")
-/// becomes an InputError at that JSON path of `file` ("/core/yielding_length"), with the value
-/// found there.
-model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesystem::path& file) {
-  try {
-    return spec.element.fidelity == model::Fidelity::truss ? model::build_brace_truss_model(spec)
-                                                           : model::build_brace_model(spec);
-  } catch (const ParameterError& error) {
-    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
-  }
-}
-
-void add_max_step_option(CLI::App& command, std::optional<double>& max_step,
-                         const std::string& description) {
-  command
-      .add_option_function<double>(
-          "--max-step",
-          [&max_step](const double& value) {
-            if (!(std::isfinite(value) && value > 0.0))
-              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
-            max_step = value;
-          },
-          description)
-      ->type_name("MM");
-}
-
-namespace {
-
 /// The --progress lines: "brb: cyclic: step 5000 of 23962 (20.9 %), deformation -34.79 mm,
 /// force -899969 N, 10717 substeps, 161 s", at most every `interval` seconds and at the last.
 class ProgressLine {
@@ -215,6 +178,39 @@ private:
 };
 
 } // namespace
+
+/// The brace's name in the outputs: its "name", or the brace file's name without extension.
+std::string brace_name(const model::BraceSpec& spec, const std::filesystem::path& file) {
+  return spec.name.empty() ? file.stem().string() : spec.name;
+}
+
+/// The brace's finite element model: the expanded full model, or the truss for
+/// "element": {"fidelity": "truss"} (the element mode only matters in frames). A ParameterError
+/// (inconsistent geometry, named by its key in the brace schema, e.g. "core/yielding_length")
+/// becomes an InputError at that JSON path of `file` ("/core/yielding_length"), with the value
+/// found there.
+model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesystem::path& file) {
+  try {
+    return spec.element.fidelity == model::Fidelity::truss ? model::build_brace_truss_model(spec)
+                                                           : model::build_brace_model(spec);
+  } catch (const ParameterError& error) {
+    throw io::input_error_from(error, io::ParameterSource{file.string(), io::read_json_file(file)});
+  }
+}
+
+void add_max_step_option(CLI::App& command, std::optional<double>& max_step,
+                         const std::string& description) {
+  command
+      .add_option_function<double>(
+          "--max-step",
+          [&max_step](const double& value) {
+            if (!(std::isfinite(value) && value > 0.0))
+              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
+            max_step = value;
+          },
+          description)
+      ->type_name("MM");
+}
 
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
   auto* cyclic = app.add_subcommand(
@@ -305,7 +301,8 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
       "    statistics, energy balance, element outputs\n"
       "  element_history.csv (with --histories): the element outputs after every step\n"
       "  shape.csv (with --shape-steps): step,node,position,lateral_y,lateral_z,station,\n"
-      "    casing_lateral_y,casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage\n"
+      "    casing_lateral_y,casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage,\n"
+      "    friction_force,wave_normal_force,core_axial_force,casing_axial_force\n"
       "Units: N, mm, MPa. Exit status: 0 completed, 1 the analysis stopped early (what was\n"
       "computed is written) or the run failed, 2 invalid input or usage (nothing written).");
   return cyclic;

@@ -127,6 +127,8 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
     point.node = static_cast<int>(n);
     point.position = axis.dot(brace_->model.coordinates(node) - brace.origin);
     std::tie(point.lateral_y, point.lateral_z) = lateral(node);
+    if (!brace.beams.empty()) // local_force()[0]: the axial force along the element's chord
+      point.core_axial_force = brace.beams[std::min(n, brace.beams.size() - 1)]->local_force()[0];
     if (brace.casing) {
       const model::CasingModel& casing = *brace.casing;
       const auto station = std::find(casing.core_nodes.begin(), casing.core_nodes.end(), node);
@@ -140,6 +142,10 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
         point.bearing_force_y = -link.link_force()[1];
         point.bearing_force_z = -link.link_force()[2];
         point.mortar_damage = link.max_mortar_damage();
+        point.friction_force = -link.link_force()[0];
+        point.wave_normal_force = link.wave_normal_force();
+        point.casing_axial_force =
+            casing.beams[std::min(s, casing.beams.size() - 1)]->local_force()[0];
       }
     }
     nodes.push_back(point);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <sstream>
 #include <string>
 
@@ -31,7 +32,7 @@ int positive_whole_number(const io::JsonValue& value, std::string_view meaning) 
 
 /// One of `allowed`, else an error listing them.
 std::string one_of(const io::JsonValue& value, std::string_view meaning,
-                   std::initializer_list<std::string_view> allowed) {
+                   std::span<const std::string_view> allowed) {
   const std::string text = value.string(meaning);
   std::string list;
   for (const std::string_view option : allowed) {
@@ -62,9 +63,11 @@ void check_cycle_selector(const io::JsonValue& metric, bool required) {
   }
 }
 
+constexpr std::array<std::string_view, 2> kDirections{"tension", "compression"};
+
 void check_direction(const io::JsonValue& metric) {
   one_of(metric.at("direction", "direction of the force, \"tension\" or \"compression\""),
-         "direction", {"tension", "compression"});
+         "direction", kDirections);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -259,8 +262,7 @@ constexpr std::array<std::string_view, 3> kFlags{"core_fracture", "casing_failur
                                                  "global_buckling"};
 
 void check_flag(const io::JsonValue& metric) {
-  one_of(metric.at("flag", "the flag of summary.json's element block"), "flag",
-         {kFlags[0], kFlags[1], kFlags[2]});
+  one_of(metric.at("flag", "the flag of summary.json's element block"), "flag", kFlags);
 }
 
 /// An element flag of summary.json: 1 when raised, 0 when not.
@@ -283,8 +285,7 @@ constexpr std::array<std::string_view, 7> kIndicators{"max_steel_damage",
 
 void check_max_indicator(const io::JsonValue& metric) {
   one_of(metric.at("indicator", "the indicator of summary.json's element block"), "indicator",
-         {kIndicators[0], kIndicators[1], kIndicators[2], kIndicators[3], kIndicators[4],
-          kIndicators[5], kIndicators[6]});
+         kIndicators);
 }
 
 /// A largest-over-the-run indicator of summary.json's element block.
@@ -518,7 +519,7 @@ MetricValue evaluate_record_largest_omega(const Json& metric, const RunData& run
 
 void check_record_peak_force(const io::JsonValue& metric) {
   if (const auto direction = metric.find("direction"))
-    one_of(*direction, "direction", {"tension", "compression"});
+    one_of(*direction, "direction", kDirections);
   check_compared_cycle(metric);
 }
 

@@ -450,16 +450,20 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
   const std::vector<std::string> lines = lines_of(read_file(output / "shape.csv"));
   ASSERT_FALSE(lines.empty());
   EXPECT_EQ(lines.front(), "step,node,position,lateral_y,lateral_z,station,casing_lateral_y,"
-                           "casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage");
+                           "casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage,"
+                           "friction_force,wave_normal_force,core_axial_force,"
+                           "casing_axial_force");
   constexpr std::size_t kNodes = 11; // 10 core elements, no end zones
   // the asked steps in order, then the last converged one (64)
   ASSERT_EQ(lines.size(), 1 + 3 * kNodes);
   const double gap = 0.05; // mm, the brace file's
   const json summary = json::parse(read_file(output / "summary.json"));
   int bearing_stations = 0;
+  std::vector<std::vector<double>> rows;
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const std::vector<double> row = numbers_of(lines[k]);
-    ASSERT_EQ(row.size(), 11u) << lines[k];
+    ASSERT_EQ(row.size(), 15u) << lines[k];
+    rows.push_back(row);
     const std::size_t block = (k - 1) / kNodes, node = (k - 1) % kNodes;
     EXPECT_EQ(row[0], (std::array{0.0, 52.0, 64.0}[block])) << lines[k];
     EXPECT_EQ(row[1], static_cast<double>(node)) << lines[k];
@@ -467,7 +471,7 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
     EXPECT_NEAR(row[2], 10.0 * static_cast<double>(node), 1e-9) << lines[k];
     EXPECT_EQ(row[5], 1.0) << lines[k];
     if (block == 0) { // the unloaded initial state: nothing has moved, nothing bears
-      for (const std::size_t column : {3u, 4u, 6u, 7u, 8u, 9u, 10u})
+      for (const std::size_t column : {3u, 4u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u, 14u})
         EXPECT_EQ(row[column], 0.0) << "column " << column << ": " << lines[k];
     }
     // no node moves further than the summary's running maximum
@@ -484,6 +488,32 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
     EXPECT_LE(row[10], 1.0);
   }
   EXPECT_GT(bearing_stations, 0) << "the core does not reach the mortar at 3 dy compression";
+
+  // Reference (statics, independent of the element formulation): the axial forces balance.
+  // Columns: 11 friction on the core, 12 N_w, 13 core element's force, 14 casing beam's.
+  // Tolerance: the chord rotations (0.05 mm over 10 mm) tilt the elements' forces off the
+  // axis by parts in 1e5 of the brace force.
+  for (const std::size_t block : {1u, 2u}) {
+    const double brace_force = hysteresis[block == 1 ? 52 : 64].force;
+    const double tolerance = 2e-5 * std::abs(brace_force);
+    const auto at = [&](std::size_t node) { return rows[block * kNodes + node]; };
+    for (std::size_t node = 0; node + 1 < kNodes; ++node) {
+      // Any section through core element `node` and casing beam `node` carries the brace force.
+      EXPECT_NEAR(at(node)[13] + at(node)[14], brace_force, tolerance) << "node " << node;
+      EXPECT_EQ(at(node)[12], 0.0) << "this brace has no sub-element waves";
+      if (node > 0) { // a core node: the core's force changes by minus the friction on it
+        EXPECT_NEAR(at(node)[13] - at(node - 1)[13] + at(node)[11], 0.0, tolerance)
+            << "node " << node;
+      }
+    }
+    // The casing has no axial support but the stopper (mid-length): at its first station
+    // its beam carries exactly the friction there, which the core's end slides against in
+    // the 3 dy compression.
+    EXPECT_NEAR(at(0)[14], at(0)[11], tolerance);
+    if (block == 1) {
+      EXPECT_GT(std::abs(at(0)[11]), 10.0 * tolerance) << "no friction at the casing's end";
+    }
+  }
 
   // a negative step is a usage error, and nothing is written
   const auto refused = scratch.path() / "refused";

@@ -44,11 +44,12 @@ struct ElementHistoryPoint {
 /// crushed. Lateral components are along the brace's section axes y and z.
 struct BraceShapeNode {
   int step = 0;
-  int node = 0;                ///< index along the brace, 0 at the start node
-  double position = 0;         ///< mm along the brace axis from the start node, initial
-  double lateral_y = 0;        ///< mm, the node's displacement along section y
-  double lateral_z = 0;        ///< mm, along section z
-  bool station = false;        ///< a casing station (the columns below are 0 elsewhere)
+  int node = 0;         ///< index along the brace, 0 at the start node
+  double position = 0;  ///< mm along the brace axis from the start node, initial
+  double lateral_y = 0; ///< mm, the node's displacement along section y
+  double lateral_z = 0; ///< mm, along section z
+  bool station =
+      false; ///< a casing station (the columns below but core_axial_force are 0 elsewhere)
   double casing_lateral_y = 0; ///< mm, the casing node's displacement along y
   double casing_lateral_z = 0; ///< mm, along z
   double bearing_force_y = 0;  ///< N, the casing's force on the core along y (mortar
@@ -56,6 +57,16 @@ struct BraceShapeNode {
                                ///< relative to the casing
   double bearing_force_z = 0;  ///< N, along z
   double mortar_damage = 0;    ///< largest bearing damage of the link's faces, 0 to 1
+  /// N, the casing's axial force on the core at the station (Coulomb friction, with the
+  /// sub-element waves' share): along the brace axis, it opposes the core's slip
+  double friction_force = 0;
+  double wave_normal_force = 0; ///< N, N_w of the sub-element waves (0 without them)
+  /// N, axial force of the core element from this node to the next (at the last node, of the
+  /// element ending there); compression negative. 0 for the truss fidelity (no beams).
+  double core_axial_force = 0;
+  /// N, axial force of the casing beam from this station to the next (at the last station, of
+  /// the beam ending there); compression negative
+  double casing_axial_force = 0;
 };
 
 struct CycleMetrics {
