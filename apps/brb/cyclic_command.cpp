@@ -302,7 +302,8 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
       "  element_history.csv (with --histories): the element outputs after every step\n"
       "  shape.csv (with --shape-steps): step,node,position,lateral_y,lateral_z,station,\n"
       "    casing_lateral_y,casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage,\n"
-      "    friction_force,wave_normal_force,core_axial_force,casing_axial_force\n"
+      "    friction_force,wave_normal_force,core_axial_force,core_axial_strain,\n"
+      "    casing_axial_force\n"
       "Units: N, mm, MPa. Exit status: 0 completed, 1 the analysis stopped early (what was\n"
       "computed is written) or the run failed, 2 invalid input or usage (nothing written).");
   return cyclic;

@@ -127,8 +127,11 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
     point.node = static_cast<int>(n);
     point.position = axis.dot(brace_->model.coordinates(node) - brace.origin);
     std::tie(point.lateral_y, point.lateral_z) = lateral(node);
-    if (!brace.beams.empty()) // local_force()[0]: the axial force along the element's chord
-      point.core_axial_force = brace.beams[std::min(n, brace.beams.size() - 1)]->local_force()[0];
+    if (!brace.beams.empty()) { // local force and deformation [0]: along the element's chord
+      const model::CoreBeam& beam = *brace.beams[std::min(n, brace.beams.size() - 1)];
+      point.core_axial_force = beam.local_force()[0];
+      point.core_axial_strain = beam.frame().local_deformation()[0] / beam.frame().initial_length();
+    }
     if (brace.casing) {
       const model::CasingModel& casing = *brace.casing;
       const auto station = std::find(casing.core_nodes.begin(), casing.core_nodes.end(), node);

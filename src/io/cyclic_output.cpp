@@ -100,14 +100,14 @@ NumericTable brace_shape_table(const analysis::CyclicTestResult& result) {
   NumericTable table({"step", "node", "position", "lateral_y", "lateral_z", "station",
                       "casing_lateral_y", "casing_lateral_z", "bearing_force_y", "bearing_force_z",
                       "mortar_damage", "friction_force", "wave_normal_force", "core_axial_force",
-                      "casing_axial_force"});
+                      "core_axial_strain", "casing_axial_force"});
   for (const analysis::BraceShapeNode& point : result.shapes) {
-    table.append_row(
-        std::array{static_cast<double>(point.step), static_cast<double>(point.node), point.position,
-                   point.lateral_y, point.lateral_z, point.station ? 1.0 : 0.0,
-                   point.casing_lateral_y, point.casing_lateral_z, point.bearing_force_y,
-                   point.bearing_force_z, point.mortar_damage, point.friction_force,
-                   point.wave_normal_force, point.core_axial_force, point.casing_axial_force});
+    table.append_row(std::array{
+        static_cast<double>(point.step), static_cast<double>(point.node), point.position,
+        point.lateral_y, point.lateral_z, point.station ? 1.0 : 0.0, point.casing_lateral_y,
+        point.casing_lateral_z, point.bearing_force_y, point.bearing_force_z, point.mortar_damage,
+        point.friction_force, point.wave_normal_force, point.core_axial_force,
+        point.core_axial_strain, point.casing_axial_force});
   }
   return table;
 }

@@ -452,7 +452,7 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
   EXPECT_EQ(lines.front(), "step,node,position,lateral_y,lateral_z,station,casing_lateral_y,"
                            "casing_lateral_z,bearing_force_y,bearing_force_z,mortar_damage,"
                            "friction_force,wave_normal_force,core_axial_force,"
-                           "casing_axial_force");
+                           "core_axial_strain,casing_axial_force");
   constexpr std::size_t kNodes = 11; // 10 core elements, no end zones
   // the asked steps in order, then the last converged one (64)
   ASSERT_EQ(lines.size(), 1 + 3 * kNodes);
@@ -462,7 +462,7 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
   std::vector<std::vector<double>> rows;
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const std::vector<double> row = numbers_of(lines[k]);
-    ASSERT_EQ(row.size(), 15u) << lines[k];
+    ASSERT_EQ(row.size(), 16u) << lines[k];
     rows.push_back(row);
     const std::size_t block = (k - 1) / kNodes, node = (k - 1) % kNodes;
     EXPECT_EQ(row[0], (std::array{0.0, 52.0, 64.0}[block])) << lines[k];
@@ -471,7 +471,7 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
     EXPECT_NEAR(row[2], 10.0 * static_cast<double>(node), 1e-9) << lines[k];
     EXPECT_EQ(row[5], 1.0) << lines[k];
     if (block == 0) { // the unloaded initial state: nothing has moved, nothing bears
-      for (const std::size_t column : {3u, 4u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u, 14u})
+      for (const std::size_t column : {3u, 4u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u, 14u, 15u})
         EXPECT_EQ(row[column], 0.0) << "column " << column << ": " << lines[k];
     }
     // no node moves further than the summary's running maximum
@@ -490,7 +490,8 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
   EXPECT_GT(bearing_stations, 0) << "the core does not reach the mortar at 3 dy compression";
 
   // Reference (statics, independent of the element formulation): the axial forces balance.
-  // Columns: 11 friction on the core, 12 N_w, 13 core element's force, 14 casing beam's.
+  // Columns: 11 friction on the core, 12 N_w, 13 core element's force, 14 its chord strain,
+  // 15 casing beam's force.
   // Tolerance: the chord rotations (0.05 mm over 10 mm) tilt the elements' forces off the
   // axis by parts in 1e5 of the brace force.
   for (const std::size_t block : {1u, 2u}) {
@@ -499,7 +500,7 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
     const auto at = [&](std::size_t node) { return rows[block * kNodes + node]; };
     for (std::size_t node = 0; node + 1 < kNodes; ++node) {
       // Any section through core element `node` and casing beam `node` carries the brace force.
-      EXPECT_NEAR(at(node)[13] + at(node)[14], brace_force, tolerance) << "node " << node;
+      EXPECT_NEAR(at(node)[13] + at(node)[15], brace_force, tolerance) << "node " << node;
       EXPECT_EQ(at(node)[12], 0.0) << "this brace has no sub-element waves";
       if (node > 0) { // a core node: the core's force changes by minus the friction on it
         EXPECT_NEAR(at(node)[13] - at(node - 1)[13] + at(node)[11], 0.0, tolerance)
@@ -509,10 +510,29 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
     // The casing has no axial support but the stopper (mid-length): at its first station
     // its beam carries exactly the friction there, which the core's end slides against in
     // the 3 dy compression.
-    EXPECT_NEAR(at(0)[14], at(0)[11], tolerance);
+    EXPECT_NEAR(at(0)[15], at(0)[11], tolerance);
     if (block == 1) {
       EXPECT_GT(std::abs(at(0)[11]), 10.0 * tolerance) << "no friction at the casing's end";
     }
+  }
+
+  // Reference (Hooke's law): at half the yield deformation (step 2, quarter-dy steps) the core
+  // is elastic, so each element's force is E A times its chord strain (E = 210000 MPa,
+  // A = 10 x 10 mm^2, the brace file's); the bow (0.1 mm) changes the chord strain by parts
+  // in 1e5.
+  const auto elastic_output = scratch.path() / "elastic";
+  const CliRun elastic =
+      run_brb(cyclic_arguments(brace, protocol, elastic_output, "--shape-steps 2"));
+  ASSERT_EQ(elastic.exit_code, 0) << elastic.err << elastic.out;
+  const std::vector<std::string> elastic_lines = lines_of(read_file(elastic_output / "shape.csv"));
+  ASSERT_EQ(elastic_lines.size(), 1 + 2 * kNodes); // step 2, then the last step
+  for (std::size_t node = 0; node + 1 < kNodes; ++node) {
+    const std::vector<double> row = numbers_of(elastic_lines[1 + node]);
+    ASSERT_EQ(row[0], 2.0);
+    const double axial_stiffness = 210000.0 * 100.0; // N
+    EXPECT_GT(row[13], 0.0) << "the cycle starts in tension: " << elastic_lines[1 + node];
+    EXPECT_NEAR(row[13], axial_stiffness * row[14], 1e-4 * std::abs(row[13]))
+        << elastic_lines[1 + node];
   }
 
   // a negative step is a usage error, and nothing is written

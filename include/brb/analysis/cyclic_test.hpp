@@ -64,6 +64,9 @@ struct BraceShapeNode {
   /// N, axial force of the core element from this node to the next (at the last node, of the
   /// element ending there); compression negative. 0 for the truss fidelity (no beams).
   double core_axial_force = 0;
+  /// -, that element's chord strain (elongation over initial length): where the core's
+  /// plastic strain goes (a friction gradient can localise it at the ends). 0 for the truss
+  double core_axial_strain = 0;
   /// N, axial force of the casing beam from this station to the next (at the last station, of
   /// the beam ending there); compression negative
   double casing_axial_force = 0;
