@@ -141,11 +141,12 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
         std::tie(point.casing_lateral_y, point.casing_lateral_z) = lateral(casing.nodes[s]);
         const element::CasingContact& link = *casing.contacts[s];
         // link_force() is the link's internal force at the core node; the casing pushes the
-        // core the other way
-        point.bearing_force_y = -link.link_force()[1];
-        point.bearing_force_z = -link.link_force()[2];
+        // core the other way (axis: friction; y, z: bearing)
+        const element::Vector3 on_core = -link.link_force();
+        point.friction_force = on_core[0];
+        point.bearing_force_y = on_core[1];
+        point.bearing_force_z = on_core[2];
         point.mortar_damage = link.max_mortar_damage();
-        point.friction_force = -link.link_force()[0];
         point.wave_normal_force = link.wave_normal_force();
         point.casing_axial_force =
             casing.beams[std::min(s, casing.beams.size() - 1)]->local_force()[0];

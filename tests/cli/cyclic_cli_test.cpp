@@ -497,7 +497,9 @@ TEST(CyclicCli, ShapeStepsWriteTheDeformedBraceWithItsCasing) {
   for (const std::size_t block : {1u, 2u}) {
     const double brace_force = hysteresis[block == 1 ? 52 : 64].force;
     const double tolerance = 2e-5 * std::abs(brace_force);
-    const auto at = [&](std::size_t node) { return rows[block * kNodes + node]; };
+    const auto at = [&](std::size_t node) -> const std::vector<double>& {
+      return rows[block * kNodes + node];
+    };
     for (std::size_t node = 0; node + 1 < kNodes; ++node) {
       // Any section through core element `node` and casing beam `node` carries the brace force.
       EXPECT_NEAR(at(node)[13] + at(node)[15], brace_force, tolerance) << "node " << node;

@@ -44,12 +44,11 @@ struct ElementHistoryPoint {
 /// crushed. Lateral components are along the brace's section axes y and z.
 struct BraceShapeNode {
   int step = 0;
-  int node = 0;         ///< index along the brace, 0 at the start node
-  double position = 0;  ///< mm along the brace axis from the start node, initial
-  double lateral_y = 0; ///< mm, the node's displacement along section y
-  double lateral_z = 0; ///< mm, along section z
-  bool station =
-      false; ///< a casing station (the columns below but core_axial_force are 0 elsewhere)
+  int node = 0;                ///< index along the brace, 0 at the start node
+  double position = 0;         ///< mm along the brace axis from the start node, initial
+  double lateral_y = 0;        ///< mm, the node's displacement along section y
+  double lateral_z = 0;        ///< mm, along section z
+  bool station = false;        ///< a casing station (elsewhere the casing columns below are 0)
   double casing_lateral_y = 0; ///< mm, the casing node's displacement along y
   double casing_lateral_z = 0; ///< mm, along z
   double bearing_force_y = 0;  ///< N, the casing's force on the core along y (mortar
