@@ -177,6 +177,21 @@ private:
   long long substeps_ = 0;
 };
 
+/// A solver control's tolerance: a fraction of the gross work in [0, 1) (0: the control off).
+void add_fraction_option(CLI::App& command, const std::string& name, double& fraction,
+                         const std::string& description) {
+  command
+      .add_option_function<double>(
+          name,
+          [&fraction, name](const double& value) {
+            if (!(std::isfinite(value) && value >= 0.0 && value < 1.0))
+              throw CLI::ValidationError(name, "must be a number in [0, 1)");
+            fraction = value;
+          },
+          description)
+      ->type_name("FRACTION");
+}
+
 } // namespace
 
 /// The brace's name in the outputs: its "name", or the brace file's name without extension.
@@ -236,31 +251,17 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
   add_max_step_option(*cyclic, command.max_step,
                       "Largest change of deformation per step, mm, when the protocol gives no "
                       "max_step (always for .csv histories); default dy / 10");
-  cyclic
-      ->add_option_function<double>(
-          "--energy-tolerance",
-          [&command](const double& tolerance) {
-            if (!(std::isfinite(tolerance) && tolerance >= 0.0 && tolerance < 1.0))
-              throw CLI::ValidationError("--energy-tolerance", "must be a number in [0, 1)");
-            command.energy_tolerance = tolerance;
-          },
-          "Energy-error control: a step is cut while the running sum of |trapezoidal work - "
-          "change of stored and dissipated energy| would exceed this fraction of the gross "
-          "work; default 1e-2 (a guard against steps that jump to a far branch), 0: off")
-      ->type_name("FRACTION");
-  cyclic
-      ->add_option_function<double>(
-          "--balance-tolerance",
-          [&command](const double& tolerance) {
-            if (!(std::isfinite(tolerance) && tolerance >= 0.0 && tolerance < 1.0))
-              throw CLI::ValidationError("--balance-tolerance", "must be a number in [0, 1)");
-            command.balance_tolerance = tolerance;
-          },
-          "Balance control: a step is cut while the energy balance's running error (external "
-          "work - stored - dissipated - integration misfit - released, summary.json's "
-          "relative_error) would exceed this fraction of the gross work; default 0 (off); "
-          "it can move a restrained core's path (README, \"Energy balance\")")
-      ->type_name("FRACTION");
+  add_fraction_option(*cyclic, "--energy-tolerance", command.energy_tolerance,
+                      "Energy-error control: a step is cut while the running sum of |trapezoidal "
+                      "work - change of stored and dissipated energy| would exceed this fraction "
+                      "of the gross work; default 1e-2 (a guard against steps that jump to a far "
+                      "branch), 0: off");
+  add_fraction_option(*cyclic, "--balance-tolerance", command.balance_tolerance,
+                      "Balance control: a step is cut while the energy balance's running error "
+                      "(external work - stored - dissipated - integration misfit - released, "
+                      "summary.json's relative_error) would exceed this fraction of the gross "
+                      "work; default 0 (off); it can move a restrained core's path (README, "
+                      "\"Energy balance\")");
   cyclic->add_flag("--histories", command.histories,
                    "Also write element_history.csv: core strain, dissipated energy, cumulative "
                    "inelastic deformation, lateral displacements, half-waves, damage and flags "

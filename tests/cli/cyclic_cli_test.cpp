@@ -738,6 +738,24 @@ TEST(CyclicCli, MaxStepMustBeAPositiveNumber) {
   EXPECT_EQ(scratch.entries().size(), 2u);
 }
 
+TEST(CyclicCli, SolverTolerancesMustBeFractionsOfTheWork) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", kGoodProtocol);
+  const auto output = scratch.path() / "results";
+  for (const std::string option : {"--energy-tolerance", "--balance-tolerance"})
+    for (const char* value : {"-1e-3", "1", "2.5", "abc"}) {
+      const CliRun run = run_brb(cyclic_arguments(brace, protocol, output, option + "=" + value));
+      EXPECT_EQ(run.exit_code, 2) << option << " " << value << ": " << run.err;
+      EXPECT_NE(run.err.find(option), std::string::npos) << run.err;
+      if (std::string(value) != "abc") { // a word is CLI11's conversion error
+        EXPECT_NE(run.err.find(option + ": must be a number in [0, 1)"), std::string::npos)
+            << run.err;
+      }
+    }
+  EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
 TEST(CyclicCli, MissingArgumentsAndFilesAreUsageOrInputErrors) {
   const ScratchDirectory scratch;
   const auto brace = scratch.write("brace.json", test_brace().dump());
