@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 
 namespace brb::analysis {
@@ -118,6 +119,11 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
     const element::Vector3 motion = analysis_.node(node).position - brace_->model.coordinates(node);
     return std::pair{motion.dot(brace.axes.col(1)), motion.dot(brace.axes.col(2))};
   };
+  // the casing station at each core node (model node number -> station index)
+  std::unordered_map<int, std::size_t> station_at;
+  if (brace.casing)
+    for (std::size_t s = 0; s < brace.casing->core_nodes.size(); ++s)
+      station_at.emplace(brace.casing->core_nodes[s], s);
   std::vector<BraceShapeNode> nodes;
   nodes.reserve(brace.nodes.size());
   for (std::size_t n = 0; n < brace.nodes.size(); ++n) {
@@ -132,25 +138,22 @@ std::vector<BraceShapeNode> CyclicTest::shape(int step) const {
       point.core_axial_force = beam.local_force()[0];
       point.core_axial_strain = beam.frame().local_deformation()[0] / beam.frame().initial_length();
     }
-    if (brace.casing) {
+    if (const auto station = station_at.find(node); station != station_at.end()) {
       const model::CasingModel& casing = *brace.casing;
-      const auto station = std::find(casing.core_nodes.begin(), casing.core_nodes.end(), node);
-      if (station != casing.core_nodes.end()) {
-        const auto s = static_cast<std::size_t>(station - casing.core_nodes.begin());
-        point.station = true;
-        std::tie(point.casing_lateral_y, point.casing_lateral_z) = lateral(casing.nodes[s]);
-        const element::CasingContact& link = *casing.contacts[s];
-        // link_force() is the link's internal force at the core node; the casing pushes the
-        // core the other way (axis: friction; y, z: bearing)
-        const element::Vector3 on_core = -link.link_force();
-        point.friction_force = on_core[0];
-        point.bearing_force_y = on_core[1];
-        point.bearing_force_z = on_core[2];
-        point.mortar_damage = link.max_mortar_damage();
-        point.wave_normal_force = link.wave_normal_force();
-        point.casing_axial_force =
-            casing.beams[std::min(s, casing.beams.size() - 1)]->local_force()[0];
-      }
+      const std::size_t s = station->second;
+      point.station = true;
+      std::tie(point.casing_lateral_y, point.casing_lateral_z) = lateral(casing.nodes[s]);
+      const element::CasingContact& link = *casing.contacts[s];
+      // link_force() is the link's internal force at the core node; the casing pushes the
+      // core the other way (axis: friction; y, z: bearing)
+      const element::Vector3 on_core = -link.link_force();
+      point.friction_force = on_core[0];
+      point.bearing_force_y = on_core[1];
+      point.bearing_force_z = on_core[2];
+      point.mortar_damage = link.max_mortar_damage();
+      point.wave_normal_force = link.wave_normal_force();
+      point.casing_axial_force =
+          casing.beams[std::min(s, casing.beams.size() - 1)]->local_force()[0];
     }
     nodes.push_back(point);
   }
