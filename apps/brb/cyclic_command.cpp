@@ -1,6 +1,7 @@
 #include "cyclic_command.hpp"
 
 #include "output_directory.hpp"
+#include "progress_line.hpp"
 
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/atomic_file.hpp"
@@ -144,39 +145,6 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
     out << "        " << files.shape->string() << "\n";
 }
 
-/// The --progress lines: "brb: cyclic: step 5000 of 23962 (20.9 %), deformation -34.79 mm,
-/// force -899969 N, 10717 substeps, 161 s", at most every `interval` seconds and at the last.
-class ProgressLine {
-public:
-  ProgressLine(std::ostream& out, std::size_t steps, double interval)
-      : out_(&out), steps_(steps), interval_(interval), start_(std::chrono::steady_clock::now()),
-        last_(start_) {}
-
-  void operator()(const analysis::CyclicStep& step) {
-    substeps_ += step.substeps;
-    const auto now = std::chrono::steady_clock::now();
-    const bool last = static_cast<std::size_t>(step.step) >= steps_;
-    if (!last && std::chrono::duration<double>(now - last_).count() < interval_)
-      return;
-    last_ = now;
-    const double done = steps_ > 0 ? 100.0 * step.step / static_cast<double>(steps_) : 100.0;
-    *out_ << "brb: cyclic: step " << step.step << " of " << steps_ << " (" << std::fixed
-          << std::setprecision(1) << done << " %), deformation " << std::setprecision(3)
-          << step.deformation << " mm, force " << std::setprecision(0) << step.force << " N, "
-          << substeps_ << " substeps, " << std::setprecision(1)
-          << std::chrono::duration<double>(now - start_).count() << " s\n"
-          << std::defaultfloat << std::setprecision(6) << std::flush;
-  }
-
-private:
-  std::ostream* out_;
-  std::size_t steps_;
-  double interval_;
-  std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point last_;
-  long long substeps_ = 0;
-};
-
 /// A solver control's tolerance: a fraction of the gross work in [0, 1) (0: the control off).
 void add_fraction_option(CLI::App& command, const std::string& name, double& fraction,
                          const std::string& description) {
@@ -282,18 +250,10 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
           "step numbers, comma-separated) and after the last converged step")
       ->delimiter(',')
       ->type_name("STEP,...");
-  cyclic
-      ->add_option_function<double>(
-          "--progress",
-          [&command](const double& seconds) {
-            if (!(std::isfinite(seconds) && seconds >= 0.0))
-              throw CLI::ValidationError("--progress", "must be a number of seconds >= 0");
-            command.progress_interval = seconds;
-          },
-          "Print a progress line on stderr at most every SECONDS of wall time (0: after every "
-          "step) and after the last step: step k of N, deformation, force, substeps so far, "
-          "elapsed time")
-      ->type_name("SECONDS");
+  add_progress_option(*cyclic, command.progress_interval,
+                      "Print a progress line on stderr at most every SECONDS of wall time (0: "
+                      "after every step) and after the last step: step k of N, deformation, "
+                      "force, substeps so far, elapsed time");
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
@@ -329,7 +289,8 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   settings.balance_tolerance = command.balance_tolerance;
   analysis::StepObserver progress;
   if (command.progress_interval)
-    progress = ProgressLine(notes, protocol.deformation.size() - 1, *command.progress_interval);
+    progress = ProgressLine(notes, "brb: cyclic: ", protocol.deformation.size() - 1,
+                            *command.progress_interval);
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
       brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings,
       command.histories, command.shape_steps, std::move(progress));

@@ -1,5 +1,7 @@
 #include "validate_command.hpp"
 
+#include "progress_line.hpp"
+
 #include "brb/io/atomic_file.hpp"
 #include "brb/io/csv.hpp"
 #include "brb/io/input_error.hpp"
@@ -128,10 +130,12 @@ struct Job {
 
 /// Runs every job on `jobs` threads (each run has its own model: nothing is shared but the
 /// read-only specimen) and returns the outcomes in job order, whatever order they finished
-/// in. Progress goes to `out` as runs finish. The first exception a run throws is rethrown
+/// in. Progress goes to `out` as runs start and finish (and, with a `progress_interval`, as
+/// their steps converge: ProgressLine). The first exception a run throws is rethrown
 /// once every thread has stopped.
 std::vector<RunOutcome> run_jobs(const std::vector<PreparedSpecimen>& specimens,
-                                 const std::vector<Job>& jobs, int threads, std::ostream& out) {
+                                 const std::vector<Job>& jobs, int threads, std::ostream& out,
+                                 std::optional<double> progress_interval) {
   std::vector<RunOutcome> outcomes(jobs.size());
   std::atomic<std::size_t> next{0};
   std::mutex output;
@@ -150,8 +154,16 @@ std::vector<RunOutcome> run_jobs(const std::vector<PreparedSpecimen>& specimens,
             << std::flush;
       }
       try {
-        outcomes[index] = run_specimen(specimen, job.refinement,
-                                       run_directory(specimen.specimen, job.refinement));
+        analysis::StepObserver progress;
+        if (progress_interval) {
+          const std::string label =
+              specimen.specimen.id + " x" + std::to_string(job.refinement) + ": ";
+          progress =
+              ProgressLine(out, label, specimen.protocol_points - 1, *progress_interval, &output);
+        }
+        outcomes[index] =
+            run_specimen(specimen, job.refinement, run_directory(specimen.specimen, job.refinement),
+                         std::move(progress));
         const std::lock_guard lock(output);
         out << specimen.specimen.id << " x" << job.refinement << ": ";
         print_run(out, outcomes[index]);
@@ -222,6 +234,10 @@ CLI::App* add_validate_command(CLI::App& app, ValidateCommand& command) {
                    "depend on it")
       ->type_name("N")
       ->check(CLI::Range(1, 256));
+  add_progress_option(*validate, command.progress_interval,
+                      "Print a progress line of every run (\"ID xK: step k of N ...\", with "
+                      "the lines of runs starting and finishing) at most every SECONDS of wall "
+                      "time (0: after every step) and after its last step");
   validate->footer(
       "Every run keeps its hysteresis.csv and summary.json in DIR/<id>/out/x<k>/.\n"
       "Exit status: 0 every check passed, 1 a check failed (or a run failed), 2 invalid input "
@@ -257,7 +273,8 @@ int run_validate_command(const ValidateCommand& command, std::ostream& out) {
          command.refinements.empty() ? specimen.refinements : command.refinements)
       jobs.push_back(Job{index, refinement});
   }
-  std::vector<RunOutcome> outcomes = run_jobs(prepared, jobs, command.jobs, out);
+  std::vector<RunOutcome> outcomes =
+      run_jobs(prepared, jobs, command.jobs, out, command.progress_interval);
 
   ValidationReport report;
   report.validation_directory = command.directory.string();

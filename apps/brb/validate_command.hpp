@@ -18,6 +18,8 @@ struct ValidateCommand {
   std::optional<std::filesystem::path> report; ///< REPORT.md's place (default DIR/REPORT.md)
   std::filesystem::path shared_directory;      ///< resolves "shared:" paths
   int jobs = 1; ///< runs at a time (each run is independent; results do not depend on it)
+  /// Seconds between the progress lines of each run (none when empty; ProgressLine)
+  std::optional<double> progress_interval;
 };
 
 /// Registers the sub-command and its options (stored into `command` when parsed).

@@ -262,7 +262,7 @@ std::vector<CheckResult> evaluate_checks(const Specimen& specimen, const RunData
 }
 
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
-                        const fs::path& output_directory) {
+                        const fs::path& output_directory, analysis::StepObserver observer) {
   const model::BraceSpec spec = refined(prepared.brace, refinement);
   model::BraceModel brace = build_checked(spec, prepared.specimen.brace_file);
   const io::LoadingProtocol protocol =
@@ -273,7 +273,8 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   analysis::NewtonSettings settings;
   settings.balance_tolerance = prepared.specimen.balance_tolerance;
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
-      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings, histories);
+      brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings, histories,
+      std::nullopt, std::move(observer));
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
   fs::create_directories(output_directory);

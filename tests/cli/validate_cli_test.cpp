@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -129,6 +130,39 @@ TEST(ValidateCli, ReportOptionChoosesWhereBothReportsGo) {
   EXPECT_TRUE(fs::is_regular_file(report));
   EXPECT_TRUE(fs::is_regular_file(scratch.path() / "tiny-report.json"));
   EXPECT_FALSE(fs::exists(folder / "REPORT.md"));
+}
+
+TEST(ValidateCli, ProgressPrintsALineForEveryStepOfEveryRun) {
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  const CliRun run = run_brb("validate " + shell_quoted(folder.string()) +
+                             " --refinements 1,2 --jobs 2 --progress 0");
+  ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
+  const json report = json::parse(read_file(folder / "report.json"));
+  const json& runs = report.at("specimens").at(0).at("runs");
+  ASSERT_EQ(runs.size(), 2u);
+  // --progress 0: one whole line per converged step, labelled with its run, even with two
+  // runs writing at once; the last one at 100 %.
+  for (const std::string label : {"tiny x1: step ", "tiny x2: step "}) {
+    const int steps = runs[label == "tiny x1: step " ? 0 : 1].at("steps").get<int>();
+    int lines = 0;
+    std::istringstream out(run.out);
+    std::string line;
+    std::string last;
+    while (std::getline(out, line))
+      if (line.rfind(label, 0) == 0) {
+        ++lines;
+        last = line;
+        EXPECT_NE(line.find(" substeps, "), std::string::npos) << line;
+        EXPECT_EQ(line.back(), 's') << line;
+      }
+    EXPECT_EQ(lines, steps) << run.out;
+    EXPECT_NE(last.find("(100.0 %)"), std::string::npos) << last;
+  }
+  const CliRun bad = run_brb("validate " + shell_quoted(folder.string()) + " --progress=-1");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--progress: must be a number of seconds >= 0"), std::string::npos)
+      << bad.err;
 }
 
 TEST(ValidateCli, InputErrorsExitWithTwoAndWriteNothing) {

@@ -94,8 +94,10 @@ struct RunOutcome {
 
 /// Runs `prepared` at `refinement`, writes hysteresis.csv and summary.json (the files of
 /// `brb cyclic`) into `output_directory` (created with its parents), and judges the checks.
+/// `observer` is called after every converged step (e.g. progress lines).
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
-                        const std::filesystem::path& output_directory);
+                        const std::filesystem::path& output_directory,
+                        analysis::StepObserver observer = {});
 
 /// The checks of a finished cyclic test (automatic ones, then the metrics): the part of
 /// run_specimen after the analysis, usable on any result.
