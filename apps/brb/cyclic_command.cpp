@@ -16,7 +16,6 @@
 #include "brb/model/brace_model.hpp"
 #include "brb/model/brace_spec.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>

@@ -27,12 +27,8 @@ void ProgressLine::operator()(const analysis::CyclicStep& step) {
        << step.deformation << " mm, force " << std::setprecision(0) << step.force << " N, "
        << substeps_ << " substeps, " << std::setprecision(1)
        << std::chrono::duration<double>(now - start_).count() << " s\n";
-  if (lock_) {
-    const std::lock_guard guard(*lock_);
-    *out_ << line.str() << std::flush;
-  } else {
-    *out_ << line.str() << std::flush;
-  }
+  const std::unique_lock guard = lock_ ? std::unique_lock(*lock_) : std::unique_lock<std::mutex>();
+  *out_ << line.str() << std::flush;
 }
 
 void add_progress_option(CLI::App& command, std::optional<double>& interval,
