@@ -1,5 +1,6 @@
 #include "cyclic_command.hpp"
 
+#include "checked_option.hpp"
 #include "output_directory.hpp"
 #include "progress_line.hpp"
 
@@ -16,7 +17,6 @@
 #include "brb/model/brace_model.hpp"
 #include "brb/model/brace_spec.hpp"
 
-#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <iomanip>
@@ -147,16 +147,9 @@ void print_report(std::ostream& out, const CyclicCommand& command, const std::st
 /// A solver control's tolerance: a fraction of the gross work in [0, 1) (0: the control off).
 void add_fraction_option(CLI::App& command, const std::string& name, double& fraction,
                          const std::string& description) {
-  command
-      .add_option_function<double>(
-          name,
-          [&fraction, name](const double& value) {
-            if (!(std::isfinite(value) && value >= 0.0 && value < 1.0))
-              throw CLI::ValidationError(name, "must be a number in [0, 1)");
-            fraction = value;
-          },
-          description)
-      ->type_name("FRACTION");
+  add_checked_number_option(
+      command, name, fraction, [](double value) { return value >= 0.0 && value < 1.0; },
+      "must be a number in [0, 1)", "FRACTION", description);
 }
 
 } // namespace
@@ -182,16 +175,9 @@ model::BraceModel build_brace(const model::BraceSpec& spec, const std::filesyste
 
 void add_max_step_option(CLI::App& command, std::optional<double>& max_step,
                          const std::string& description) {
-  command
-      .add_option_function<double>(
-          "--max-step",
-          [&max_step](const double& value) {
-            if (!(std::isfinite(value) && value > 0.0))
-              throw CLI::ValidationError("--max-step", "must be a finite number of mm > 0");
-            max_step = value;
-          },
-          description)
-      ->type_name("MM");
+  add_checked_number_option(
+      command, "--max-step", max_step, [](double value) { return value > 0.0; },
+      "must be a finite number of mm > 0", "MM", description);
 }
 
 CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {

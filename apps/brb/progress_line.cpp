@@ -1,6 +1,7 @@
 #include "progress_line.hpp"
 
-#include <cmath>
+#include "checked_option.hpp"
+
 #include <iomanip>
 #include <ios>
 #include <sstream>
@@ -33,16 +34,9 @@ void ProgressLine::operator()(const analysis::CyclicStep& step) {
 
 void add_progress_option(CLI::App& command, std::optional<double>& interval,
                          const std::string& description) {
-  command
-      .add_option_function<double>(
-          "--progress",
-          [&interval](const double& seconds) {
-            if (!(std::isfinite(seconds) && seconds >= 0.0))
-              throw CLI::ValidationError("--progress", "must be a number of seconds >= 0");
-            interval = seconds;
-          },
-          description)
-      ->type_name("SECONDS");
+  add_checked_number_option(
+      command, "--progress", interval, [](double seconds) { return seconds >= 0.0; },
+      "must be a number of seconds >= 0", "SECONDS", description);
 }
 
 } // namespace brb::cli
