@@ -40,10 +40,16 @@ double BraceIndicatorTracker::max_lateral_displacement(const Positions& position
 void BraceIndicatorTracker::observe(const Positions& position, double deformation, double force) {
   const model::BraceHandles& brace = *brace_;
   BraceIndicators& indicators = indicators_;
+  int uniform_beams = 0;
+  const auto count_uniform = [&uniform_beams](const auto& beam) {
+    if (beam.local_beam().committed_axial_strain_field() == element::AxialStrainField::uniform)
+      ++uniform_beams;
+  };
   for (const auto* beam : brace.beams) {
     for (const auto& section : beam->local_beam().sections()) {
       indicators.max_steel_damage = std::max(indicators.max_steel_damage, section.max_damage());
     }
+    count_uniform(*beam);
   }
   if (brace.truss)
     indicators.max_steel_damage = std::max(indicators.max_steel_damage, brace.truss->damage());
@@ -87,6 +93,7 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     for (const auto* beam : casing.beams) {
       for (const auto& section : beam->local_beam().sections())
         fill_damage = std::max(fill_damage, section.max_damage());
+      count_uniform(*beam);
     }
     indicators.max_mortar_damage = std::max(indicators.max_mortar_damage, fill_damage);
     const auto& link = casing.interior_link;
@@ -146,6 +153,8 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     }
     indicators.max_buckling_half_waves = std::max(indicators.max_buckling_half_waves, half_waves);
   }
+  indicators.uniform_axial_strain_beams =
+      std::max(indicators.uniform_axial_strain_beams, uniform_beams);
   if (indicators.max_steel_damage >= kFractureDamage)
     indicators.core_fracture = true;
   const double shortening = previous_deformation_ - deformation; // > 0: shorter

@@ -70,6 +70,7 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
            {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
            {"max_buckling_half_waves", indicators.max_buckling_half_waves},
            {"cumulative_inelastic_deformation", indicators.cumulative_inelastic_deformation},
+           {"uniform_axial_strain_beams", indicators.uniform_axial_strain_beams},
            {"core_fracture", indicators.core_fracture},
            {"casing_failure", indicators.casing_failure},
            {"global_buckling", indicators.global_buckling}};

@@ -38,6 +38,9 @@ struct BraceIndicators {
   /// Sum over the steps of |d(delta) - dF / K0| / dy, K0 = Py / dy: the cumulative inelastic
   /// deformation in multiples of the yield deformation (AISC 341 K3 uses it).
   double cumulative_inelastic_deformation = 0.0;
+  /// Beams of the brace (core and casing) whose axial strain fell back to uniform over their
+  /// points: the equal-force solve of a softening section had no solution (corot_beam_3d.hpp)
+  int uniform_axial_strain_beams = 0;
   bool core_fracture = false;
   bool casing_failure = false;
   bool global_buckling = false;

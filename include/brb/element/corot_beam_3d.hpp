@@ -14,6 +14,21 @@
 // Local forces [N, m_i, m_j] follow from virtual work: N conjugate to u_bar, and
 //   m_{i,y} = sum_k w_k (6 xi_k - 4) M_{y,k},  m_{j,y} = sum_k w_k (6 xi_k - 2) M_{y,k},
 // (likewise z), the torques -/+ G J (theta_jx - theta_ix) / L0.
+//
+// Fallback: where a section softens (a mortar casing beam cracking through in bending, a
+// crushed fill), the point whose force has passed its peak cannot carry the axial force the
+// others ask for, and the equal-force solve has no solution (measured: the small BRB of
+// BRB_SOURCE_FACTS section 6 driven to -43 dy, whose mortar casing cracks through next to the
+// stopper; the run stopped there). The beam then takes a uniform axial strain e0_k = u_bar /
+// L0 at every point (the displacement-based beam, with N = sum_k w_k N_k by virtual work) and
+// keeps it: the form is part of its history, committed with the sections and reverted with
+// them, so a failed step that is cut and retried starts from the equilibrated form. It is
+// kept within a trial too: a beam whose form changed from one Newton iterate to the next
+// (the equal-force solve failing at some iterates only) gave the pseudo-transient
+// continuation no rest at the small BRB's crack-through (measured: the run stopped there
+// again). The price: a far Newton iterate that needed the fallback and then converged keeps
+// the beam uniform (measured: four core beams of UCSD G1, its compression yield force
+// 2144.6 kN against 2139.3 kN before the fallback).
 #pragma once
 
 #include "brb/element/beam_integration.hpp"
@@ -31,7 +46,14 @@
 
 namespace brb::element {
 
-/// The local beam with constant axial force: owns its sections (one per integration point).
+/// How a local beam's axial strain varies between its integration points.
+enum class AxialStrainField {
+  equilibrated, ///< each point its own e0_k, one axial force at every point (the default)
+  uniform,      ///< e0_k = u_bar / L0 at every point: the fallback of a softening section
+};
+
+/// The local beam with constant axial force (after the fallback: uniform axial strain); owns
+/// its sections (one per integration point).
 template <class Section> class LocalBeam {
 public:
   LocalBeam(double length, BeamIntegration integration, std::vector<Section> sections)
@@ -39,85 +61,39 @@ public:
         axial_strain_(integration_.weights.size(), 0.0), committed_axial_strain_(axial_strain_) {}
 
   /// Local forces and tangent for local deformations d_l = [u_bar, theta_i, theta_j].
-  /// Returns false if the axial equilibrium iteration fails.
+  /// Returns false only if a section's forces are not finite: where the equal-force axial
+  /// solve fails, the beam falls back to a uniform axial strain (see the file comment).
   bool evaluate(const LocalVector& deformation, LocalVector& force, LocalMatrix& tangent,
                 std::string& failure) {
     const std::size_t points = sections_.size();
     const double elongation = deformation[0];
-    start_from_committed(elongation);
-
     std::array<Eigen::Vector2d, kMaxPoints> curvature;
     for (std::size_t k = 0; k < points; ++k)
       curvature[k] = curvature_at(k, deformation);
 
-    // Newton's method on the strains e0_k with N from the linearised compatibility. Its
-    // iterates can cycle where fibers cross between elastic and plastic branches (measured on
-    // UCSD G1 at 2 dy: a period-4 cycle of iterates swinging between +-5e6 N, against a
-    // force of 2e6 N); after kNewtonAxialIterations the bracketed solve takes over.
     double axial_force = 0.0;
-    bool converged = false;
-    for (int iteration = 0; iteration < kNewtonAxialIterations && !converged; ++iteration) {
-      if (!evaluate_points(curvature, failure)) {
-        if (iteration == 0)
+    switch_work_ = committed_switch_work_;
+    if (axial_field_ == AxialStrainField::equilibrated &&
+        solve_equilibrated_axial_strains(elongation, curvature, axial_force)) {
+      assemble_equilibrated(axial_force, force, tangent);
+    } else {
+      axial_field_ = AxialStrainField::uniform;
+      for (std::size_t k = 0; k < points; ++k) {
+        if (!evaluate_point(k, elongation / length_, curvature[k]) &&
+            !section_response_[k].force.allFinite()) {
+          failure = "local beam: non-finite section forces at a uniform axial strain";
           return false;
-        // A Newton iterate left the laws' domain: a point whose fibers are all near their
-        // saturated stress has an axial stiffness near zero, and (N - N_k) / a_k throws its
-        // strain far away (measured: CB225's core at its Chaboche saturation, 1.75 %
-        // shortening, stopped the whole run). The bracketed solve keeps every strain inside
-        // a bracket.
-        failure.clear();
-        break;
+        }
       }
-      converged = equilibrium_reached(elongation, axial_force);
-      if (!converged) {
-        for (std::size_t k = 0; k < points; ++k)
-          axial_strain_[k] += (axial_force - axial_force_at_[k]) / axial_stiffness_at_[k];
+      if (committed_axial_field_ == AxialStrainField::equilibrated)
+        switch_work_ += work_taken_at_switch();
+      assemble_uniform(force, tangent);
+      if (!tangent.allFinite()) {
+        failure = "local beam: non-finite section tangent at a uniform axial strain";
+        return false;
       }
     }
-    if (!converged) {
-      start_from_committed(elongation);
-      converged = solve_axial_in_brackets(elongation, curvature, axial_force);
-    }
-    if (!converged) {
-      failure = "local beam: axial equilibrium between integration points did not converge";
-      return false;
-    }
 
-    // Forces and the statically condensed tangent (e0_k eliminated):
-    //   dN = [du/L0 + sum w_k c_k . G_k dtheta / a_k] / F,  F = sum w_k / a_k,
-    //   dm = sum w_k G_k^T [c_k de0_k + K_bb,k G_k dtheta] (times L0 / L0 = 1).
-    force.setZero();
-    tangent.setZero();
-    double flexibility = 0.0;
-    Eigen::Matrix<double, 4, 1> coupling = Eigen::Matrix<double, 4, 1>::Zero(); // h
-    Eigen::Matrix4d bending = Eigen::Matrix4d::Zero();
-    Eigen::Matrix<double, 4, 1> end_moments = Eigen::Matrix<double, 4, 1>::Zero();
-    for (std::size_t k = 0; k < points; ++k) {
-      const section::SectionResponse& response = section_response_[k];
-      const double a = response.tangent(0, 0);
-      const Eigen::Vector2d c = response.tangent.block<2, 1>(1, 0);
-      const Eigen::Matrix2d kbb = response.tangent.block<2, 2>(1, 1);
-      const Eigen::Matrix<double, 2, 4> g = curvature_matrix(k);
-      const double w = integration_.weights[k];
-      flexibility += w / a;
-      coupling += w * g.transpose() * c / a;
-      bending += w * length_ * g.transpose() * (kbb - c * c.transpose() / a) * g;
-      end_moments += w * length_ * g.transpose() * response.force.tail<2>();
-    }
-    bending += length_ * coupling * coupling.transpose() / flexibility;
-
-    // assemble into d_l order [u, ti_x, ti_y, ti_z, tj_x, tj_y, tj_z]; bending dofs
-    // (ti_y, ti_z, tj_y, tj_z) -> local indices (2, 3, 5, 6)
-    constexpr std::array<int, 4> bend{2, 3, 5, 6};
-    force[0] = axial_force;
-    tangent(0, 0) = 1.0 / (length_ * flexibility);
-    for (int r = 0; r < 4; ++r) {
-      force[bend[r]] = end_moments[r];
-      tangent(bend[r], 0) = coupling[r] / flexibility;
-      tangent(0, bend[r]) = coupling[r] / flexibility;
-      for (int c = 0; c < 4; ++c)
-        tangent(bend[r], bend[c]) = bending(r, c);
-    }
     const double torsion = torsional_stiffness() / length_;
     const double twist = deformation[4] - deformation[1];
     force[1] = -torsion * twist;
@@ -132,11 +108,15 @@ public:
     for (auto& section : sections_)
       section.commit();
     committed_axial_strain_ = axial_strain_;
+    committed_axial_field_ = axial_field_;
+    committed_switch_work_ = switch_work_;
   }
   void revert_to_committed() {
     for (auto& section : sections_)
       section.revert_to_committed();
     axial_strain_ = committed_axial_strain_;
+    axial_field_ = committed_axial_field_;
+    switch_work_ = committed_switch_work_;
   }
 
   ElementEnergy energy() const {
@@ -150,6 +130,8 @@ public:
       // the laws' time discretisation (ElementEnergy::integration_misfit)
       energy.integration_misfit += length * (sections_[k].stress_work() - stored - dissipated);
     }
+    // the points' work at the switch to a uniform axial strain that the end forces did not do
+    energy.integration_misfit -= switch_work_;
     energy.stored += 0.5 * torsional_stiffness() / length_ * twist_ * twist_;
     return energy;
   }
@@ -159,12 +141,133 @@ public:
   double length() const { return length_; }
   /// Axial strain e0 at each integration point (trial).
   const std::vector<double>& axial_strains() const { return axial_strain_; }
+  /// How the axial strain varies between the points (trial): `uniform` once the equal-force
+  /// solve has failed (the fallback of a softening section).
+  AxialStrainField axial_strain_field() const { return axial_field_; }
+  /// The same, at the committed state.
+  AxialStrainField committed_axial_strain_field() const { return committed_axial_field_; }
 
   static constexpr std::size_t kMaxPoints = 6;
 
 private:
   static constexpr int kNewtonAxialIterations = 12;
+  /// The bending DOF (theta_iy, theta_iz, theta_jy, theta_jz) in the local order
+  /// [u, theta_ix, theta_iy, theta_iz, theta_jx, theta_jy, theta_jz].
+  static constexpr std::array<int, 4> kBendingDofs{2, 3, 5, 6};
   static constexpr int kBracketIterations = 200;
+
+  /// The point strains e0_k with one axial force at every point and sum_k w_k e0_k = u_bar /
+  /// L0; false when there is none (a softening point past its peak) or it is not found.
+  bool solve_equilibrated_axial_strains(double elongation,
+                                        const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
+                                        double& axial_force) {
+    start_from_committed(elongation);
+    // Newton's method on the strains e0_k with N from the linearised compatibility. Its
+    // iterates can cycle where fibers cross between elastic and plastic branches (measured on
+    // UCSD G1 at 2 dy: a period-4 cycle of iterates swinging between +-5e6 N, against a
+    // force of 2e6 N); after kNewtonAxialIterations the bracketed solve takes over.
+    for (int iteration = 0; iteration < kNewtonAxialIterations; ++iteration) {
+      if (!evaluate_points(curvature)) {
+        // An iterate left the laws' domain: a point whose fibers are all near their saturated
+        // stress has an axial stiffness near zero, and (N - N_k) / a_k throws its strain far
+        // away (measured: CB225's core at its Chaboche saturation, 1.75 % shortening, stopped
+        // the whole run). The bracketed solve keeps every strain inside a bracket.
+        break;
+      }
+      if (equilibrium_reached(elongation, axial_force))
+        return true;
+      for (std::size_t k = 0; k < sections_.size(); ++k)
+        axial_strain_[k] += (axial_force - axial_force_at_[k]) / axial_stiffness_at_[k];
+    }
+    start_from_committed(elongation);
+    return solve_axial_in_brackets(elongation, curvature, axial_force);
+  }
+
+  /// Forces and the statically condensed tangent of the equilibrated beam (e0_k eliminated):
+  ///   dN = [du/L0 + sum w_k c_k . G_k dtheta / a_k] / F,  F = sum w_k / a_k,
+  ///   dm = sum w_k G_k^T [c_k de0_k + K_bb,k G_k dtheta] (times L0 / L0 = 1).
+  void assemble_equilibrated(double axial_force, LocalVector& force, LocalMatrix& tangent) const {
+    force.setZero();
+    tangent.setZero();
+    double flexibility = 0.0;
+    Eigen::Matrix<double, 4, 1> coupling = Eigen::Matrix<double, 4, 1>::Zero(); // h
+    Eigen::Matrix4d bending = Eigen::Matrix4d::Zero();
+    Eigen::Matrix<double, 4, 1> end_moments = Eigen::Matrix<double, 4, 1>::Zero();
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      const section::SectionResponse& response = section_response_[k];
+      const double a = response.tangent(0, 0);
+      const Eigen::Vector2d c = response.tangent.block<2, 1>(1, 0);
+      const Eigen::Matrix2d kbb = response.tangent.block<2, 2>(1, 1);
+      const Eigen::Matrix<double, 2, 4> g = curvature_matrix(k);
+      const double w = integration_.weights[k];
+      flexibility += w / a;
+      coupling += w * g.transpose() * c / a;
+      bending += w * length_ * g.transpose() * (kbb - c * c.transpose() / a) * g;
+      end_moments += w * length_ * g.transpose() * response.force.tail<2>();
+    }
+    bending += length_ * coupling * coupling.transpose() / flexibility;
+    force[0] = axial_force;
+    tangent(0, 0) = 1.0 / (length_ * flexibility);
+    for (int r = 0; r < 4; ++r) {
+      force[kBendingDofs[r]] = end_moments[r];
+      tangent(kBendingDofs[r], 0) = coupling[r] / flexibility;
+      tangent(0, kBendingDofs[r]) = coupling[r] / flexibility;
+      for (int c = 0; c < 4; ++c)
+        tangent(kBendingDofs[r], kBendingDofs[c]) = bending(r, c);
+    }
+  }
+
+  /// The trapezoidal work the points take over the step that switches the beam from its
+  /// committed equilibrated strains e0_k,c (one force N_c) to the uniform trial strain u / L0,
+  /// beyond the work of the end forces, 0.5 (N_c + N) du (N mm). The bending work agrees in
+  /// both forms (m = sum w_k L0 G_k^T M_k), and so does N_c's; what is left is
+  ///   0.5 sum_k w_k L0 N_k (u_c / L0 - e0_k,c),  u_c / L0 = sum_k w_k e0_k,c,
+  /// the trial forces N_k on the committed strains' spread about their mean. The energy
+  /// balance books it with the laws' integration misfit (energy()), so that a switch is no
+  /// error of the solution.
+  double work_taken_at_switch() const {
+    double committed_mean = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
+    double work = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      work += integration_.weights[k] * section_response_[k].force[0] *
+              (committed_mean - committed_axial_strain_[k]);
+    return 0.5 * length_ * work;
+  }
+
+  /// Forces and tangent of the displacement-based beam (e0_k = u_bar / L0 at every point), by
+  /// virtual work: N = sum w_k N_k, m = sum w_k L0 G_k^T M_k, and their derivatives
+  ///   dN = sum w_k [a_k du / L0 + (dN/dkappa)_k G_k dtheta],
+  ///   dm = sum w_k G_k^T [(dM/de0)_k du + L0 K_bb,k G_k dtheta].
+  void assemble_uniform(LocalVector& force, LocalMatrix& tangent) const {
+    force.setZero();
+    tangent.setZero();
+    double axial_stiffness = 0.0;
+    Eigen::Matrix<double, 1, 4> axial_bending = Eigen::Matrix<double, 1, 4>::Zero();
+    Eigen::Matrix<double, 4, 1> bending_axial = Eigen::Matrix<double, 4, 1>::Zero();
+    Eigen::Matrix4d bending = Eigen::Matrix4d::Zero();
+    Eigen::Matrix<double, 4, 1> end_moments = Eigen::Matrix<double, 4, 1>::Zero();
+    for (std::size_t k = 0; k < sections_.size(); ++k) {
+      const section::SectionResponse& response = section_response_[k];
+      const Eigen::Matrix<double, 2, 4> g = curvature_matrix(k);
+      const double w = integration_.weights[k];
+      force[0] += w * response.force[0];
+      axial_stiffness += w * response.tangent(0, 0) / length_;
+      axial_bending += w * response.tangent.block<1, 2>(0, 1) * g;
+      bending_axial += w * g.transpose() * response.tangent.block<2, 1>(1, 0);
+      bending += w * length_ * g.transpose() * response.tangent.block<2, 2>(1, 1) * g;
+      end_moments += w * length_ * g.transpose() * response.force.tail<2>();
+    }
+    tangent(0, 0) = axial_stiffness;
+    for (int r = 0; r < 4; ++r) {
+      force[kBendingDofs[r]] = end_moments[r];
+      tangent(0, kBendingDofs[r]) = axial_bending[r];
+      tangent(kBendingDofs[r], 0) = bending_axial[r];
+      for (int c = 0; c < 4; ++c)
+        tangent(kBendingDofs[r], kBendingDofs[c]) = bending(r, c);
+    }
+  }
 
   /// The starting axial strains: the committed distribution shifted to the new mean strain
   /// u_bar / L0.
@@ -176,14 +279,12 @@ private:
       axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
   }
 
-  /// Evaluates every section at its trial axial strain and the given curvatures.
-  bool evaluate_points(const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
-                       std::string& failure) {
+  /// Evaluates every section at its trial axial strain and the given curvatures; false if
+  /// some point's axial stiffness is zero or its forces are not finite.
+  bool evaluate_points(const std::array<Eigen::Vector2d, kMaxPoints>& curvature) {
     for (std::size_t k = 0; k < sections_.size(); ++k) {
-      if (!evaluate_point(k, axial_strain_[k], curvature[k])) {
-        failure = "local beam: singular or non-finite axial section stiffness";
+      if (!evaluate_point(k, axial_strain_[k], curvature[k]))
         return false;
-      }
     }
     return true;
   }
@@ -279,8 +380,7 @@ private:
   bool solve_axial_in_brackets(double elongation,
                                const std::array<Eigen::Vector2d, kMaxPoints>& curvature,
                                double& axial_force) {
-    std::string unused;
-    if (!evaluate_points(curvature, unused))
+    if (!evaluate_points(curvature))
       return false;
     equilibrium_reached(elongation, axial_force); // the starting N
     double below = -std::numeric_limits<double>::infinity();
@@ -336,6 +436,10 @@ private:
   std::vector<Section> sections_;
   std::vector<double> axial_strain_;
   std::vector<double> committed_axial_strain_;
+  AxialStrainField axial_field_ = AxialStrainField::equilibrated;
+  AxialStrainField committed_axial_field_ = AxialStrainField::equilibrated;
+  double switch_work_ = 0.0; ///< N mm, work_taken_at_switch() once switched (trial)
+  double committed_switch_work_ = 0.0;
   std::array<section::SectionResponse, kMaxPoints> section_response_{};
   std::array<double, kMaxPoints> axial_force_at_{};
   std::array<double, kMaxPoints> axial_stiffness_at_{};
