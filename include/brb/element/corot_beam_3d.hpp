@@ -187,8 +187,6 @@ private:
   ///   dN = [du/L0 + sum w_k c_k . G_k dtheta / a_k] / F,  F = sum w_k / a_k,
   ///   dm = sum w_k G_k^T [c_k de0_k + K_bb,k G_k dtheta] (times L0 / L0 = 1).
   void assemble_equilibrated(double axial_force, LocalVector& force, LocalMatrix& tangent) const {
-    force.setZero();
-    tangent.setZero();
     double flexibility = 0.0;
     Eigen::Matrix<double, 4, 1> coupling = Eigen::Matrix<double, 4, 1>::Zero(); // h
     Eigen::Matrix4d bending = Eigen::Matrix4d::Zero();
@@ -206,15 +204,40 @@ private:
       end_moments += w * length_ * g.transpose() * response.force.tail<2>();
     }
     bending += length_ * coupling * coupling.transpose() / flexibility;
+    const Eigen::Matrix<double, 4, 1> axial_coupling = coupling / flexibility;
+    write_local_response(axial_force, 1.0 / (length_ * flexibility), axial_coupling.transpose(),
+                         axial_coupling, bending, end_moments, force, tangent);
+  }
+
+  /// Writes the beam's local response into the local DOF order (axial, then the four end
+  /// rotations kBendingDofs): N and the end moments, and the tangent's axial entry, its
+  /// axial-bending row and bending-axial column, and the bending block. Both forms of the
+  /// beam (equilibrated, uniform) share it.
+  static void write_local_response(double axial_force, double axial_stiffness,
+                                   const Eigen::Matrix<double, 1, 4>& axial_bending,
+                                   const Eigen::Matrix<double, 4, 1>& bending_axial,
+                                   const Eigen::Matrix4d& bending,
+                                   const Eigen::Matrix<double, 4, 1>& end_moments,
+                                   LocalVector& force, LocalMatrix& tangent) {
+    force.setZero();
+    tangent.setZero();
     force[0] = axial_force;
-    tangent(0, 0) = 1.0 / (length_ * flexibility);
+    tangent(0, 0) = axial_stiffness;
     for (int r = 0; r < 4; ++r) {
       force[kBendingDofs[r]] = end_moments[r];
-      tangent(kBendingDofs[r], 0) = coupling[r] / flexibility;
-      tangent(0, kBendingDofs[r]) = coupling[r] / flexibility;
+      tangent(0, kBendingDofs[r]) = axial_bending[r];
+      tangent(kBendingDofs[r], 0) = bending_axial[r];
       for (int c = 0; c < 4; ++c)
         tangent(kBendingDofs[r], kBendingDofs[c]) = bending(r, c);
     }
+  }
+
+  /// The committed axial strains' weighted mean, sum_k w_k e0_k,c (= u_c / L0).
+  double committed_mean_strain() const {
+    double mean = 0.0;
+    for (std::size_t k = 0; k < sections_.size(); ++k)
+      mean += integration_.weights[k] * committed_axial_strain_[k];
+    return mean;
   }
 
   /// The trapezoidal work the points take over the step that switches the beam from its
@@ -226,9 +249,7 @@ private:
   /// balance books it with the laws' integration misfit (energy()), so that a switch is no
   /// error of the solution.
   double work_taken_at_switch() const {
-    double committed_mean = 0.0;
-    for (std::size_t k = 0; k < sections_.size(); ++k)
-      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
+    const double committed_mean = committed_mean_strain();
     double work = 0.0;
     for (std::size_t k = 0; k < sections_.size(); ++k)
       work += integration_.weights[k] * section_response_[k].force[0] *
@@ -241,8 +262,7 @@ private:
   ///   dN = sum w_k [a_k du / L0 + (dN/dkappa)_k G_k dtheta],
   ///   dm = sum w_k G_k^T [(dM/de0)_k du + L0 K_bb,k G_k dtheta].
   void assemble_uniform(LocalVector& force, LocalMatrix& tangent) const {
-    force.setZero();
-    tangent.setZero();
+    double axial_force = 0.0;
     double axial_stiffness = 0.0;
     Eigen::Matrix<double, 1, 4> axial_bending = Eigen::Matrix<double, 1, 4>::Zero();
     Eigen::Matrix<double, 4, 1> bending_axial = Eigen::Matrix<double, 4, 1>::Zero();
@@ -252,29 +272,21 @@ private:
       const section::SectionResponse& response = section_response_[k];
       const Eigen::Matrix<double, 2, 4> g = curvature_matrix(k);
       const double w = integration_.weights[k];
-      force[0] += w * response.force[0];
+      axial_force += w * response.force[0];
       axial_stiffness += w * response.tangent(0, 0) / length_;
       axial_bending += w * response.tangent.block<1, 2>(0, 1) * g;
       bending_axial += w * g.transpose() * response.tangent.block<2, 1>(1, 0);
       bending += w * length_ * g.transpose() * response.tangent.block<2, 2>(1, 1) * g;
       end_moments += w * length_ * g.transpose() * response.force.tail<2>();
     }
-    tangent(0, 0) = axial_stiffness;
-    for (int r = 0; r < 4; ++r) {
-      force[kBendingDofs[r]] = end_moments[r];
-      tangent(0, kBendingDofs[r]) = axial_bending[r];
-      tangent(kBendingDofs[r], 0) = bending_axial[r];
-      for (int c = 0; c < 4; ++c)
-        tangent(kBendingDofs[r], kBendingDofs[c]) = bending(r, c);
-    }
+    write_local_response(axial_force, axial_stiffness, axial_bending, bending_axial, bending,
+                         end_moments, force, tangent);
   }
 
   /// The starting axial strains: the committed distribution shifted to the new mean strain
   /// u_bar / L0.
   void start_from_committed(double elongation) {
-    double committed_mean = 0.0;
-    for (std::size_t k = 0; k < sections_.size(); ++k)
-      committed_mean += integration_.weights[k] * committed_axial_strain_[k];
+    const double committed_mean = committed_mean_strain();
     for (std::size_t k = 0; k < sections_.size(); ++k)
       axial_strain_[k] = committed_axial_strain_[k] + elongation / length_ - committed_mean;
   }
