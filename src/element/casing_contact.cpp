@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -29,6 +30,17 @@ void CasingContactParameters::validate() const {
   require(tangential_stiffness > 0.0, "tangential_stiffness", "must be > 0 N/mm");
   require((axes.transpose() * axes - Matrix3::Identity()).norm() < 1e-9, "axes",
           "must be orthonormal");
+  if (splitting)
+    splitting->validate();
+}
+
+void CasingSplitting::validate() const {
+  require(wall_area_y > 0.0 && std::isfinite(wall_area_y), "wall_area_y",
+          "must be > 0 mm^2 (mortar beside the core's opening)");
+  require(wall_area_z > 0.0 && std::isfinite(wall_area_z), "wall_area_z",
+          "must be > 0 mm^2 (mortar beside the core's opening)");
+  require(wall_length_y > 0.0 && std::isfinite(wall_length_y), "wall_length_y", "must be > 0 mm");
+  require(wall_length_z > 0.0 && std::isfinite(wall_length_z), "wall_length_z", "must be > 0 mm");
 }
 
 void CoreExpansion::validate() const {
@@ -108,6 +120,10 @@ CasingContact::CasingContact(std::array<int, 2> nodes, const Vector3& core_posit
                                                        parameters.bearing_depth_z)},
       friction_({1.0, parameters.tangential_stiffness, parameters.friction_coefficient}),
       skip_open_links_(skip_open_links) {
+  if (parameters_.splitting) {
+    walls_.emplace_back(parameters_.mortar, parameters_.splitting->wall_length_y);
+    walls_.emplace_back(parameters_.mortar, parameters_.splitting->wall_length_z);
+  }
   if (expansion) {
     chord_ends_ = {index_of(nodes_, expansion->previous_node),
                    index_of(nodes_, expansion->next_node)};
@@ -181,6 +197,9 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   trial_ = committed_;
   trial_.bearing_strain.fill(0.0);
   trial_.face_force.fill(0.0);
+  trial_.wall_strain.fill(0.0);
+  trial_.opening.fill(0.0);
+  trial_.wall_force.fill(0.0);
   trial_.relative =
       axes.transpose() * (configuration[0].position - configuration[1].position - initial_offset_);
   const Vector3& relative = trial_.relative;
@@ -226,6 +245,11 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   // Bearing on each face: penetration p (see penetration()); the mortar is compressed at
   // strain -p / depth. Faces not penetrated cost nothing. Per direction the sums over its
   // two faces: bearing force S, stiffness K (dS/de) and signed stiffness K_r (dS/dr).
+  // With CasingSplitting the faces bear at p - w / 2 (w: the direction's opening, solved so
+  // that the walls' force is (F+ + F-) / 2), and the stiffnesses are condensed over w:
+  // dw = (K+ dp+ + K- dp-) / (2 D), D = dT/dw + (K+ + K-) / 4, so with s = K+ + K- and
+  // t = K+ - K-:  dS_r/dr = s - t^2 / (4 D),  dS_r/de = dS_e/dr = t (1 - s / (4 D)),
+  // dS_e/de = s (1 - s / (4 D))  (S_r = F+ - F-, S_e = F+ + F-).
   Vector3 local_force = Vector3::Zero(); // resisting force on the core (axis, y, z)
   Matrix3 local_tangent = Matrix3::Zero();
   double normal_force = 0.0;
@@ -235,34 +259,60 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
   bool penetrated = false;
   in_contact_ = false;
   for (int direction = 1; direction <= 2; ++direction) {
-    const double area = direction == 1 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
-    const double depth = direction == 1 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
-    const material::MortarUniaxial& bearing = bearing_[direction - 1];
+    const int first_face = 2 * (direction - 1);
+    const std::array<double, 2> kinematic{penetration(first_face), penetration(first_face + 1)};
+    const bool split = !walls_.empty() && (kinematic[0] > 0.0 || kinematic[1] > 0.0);
+    std::array<FaceBearing, 2> faces;
+    WallResponse walls;
+    double opening = 0.0;
+    if (split) {
+      if (!solve_split(direction, kinematic, faces, walls, opening, failure))
+        return false;
+    } else {
+      for (int side = 0; side < 2; ++side) {
+        faces[static_cast<std::size_t>(side)] = bear(first_face + side, kinematic[side], failure);
+        if (!std::isfinite(faces[static_cast<std::size_t>(side)].force))
+          return false;
+      }
+    }
     for (int side = 0; side < 2; ++side) {
-      const int face = 2 * (direction - 1) + side;
-      const double face_penetration = penetration(face);
-      if (!(face_penetration > 0.0))
+      const int face = first_face + side;
+      const FaceBearing& bearing = faces[static_cast<std::size_t>(side)];
+      if (!bearing.loaded)
         continue;
       penetrated = true;
-      const double strain = -face_penetration / depth;
-      const auto response = bearing.evaluate(committed_.faces[face], strain);
-      if (!std::isfinite(response.stress)) {
-        failure = "casing contact: non-finite bearing stress";
+      trial_.faces[face] = bearing.state;
+      trial_.bearing_strain[face] = bearing.strain;
+      const double sign = side == 0 ? 1.0 : -1.0; // dp/dr
+      local_force[direction] += sign * bearing.force;
+      normal_force += bearing.force;
+      direction_force[direction - 1] += bearing.force;
+      trial_.face_force[face] = bearing.force;
+      in_contact_ = in_contact_ || bearing.force > 0.0;
+      if (!split) {
+        local_tangent(direction, direction) += bearing.stiffness;
+        normal_rate[direction] += sign * bearing.stiffness;
+        direction_stiffness[direction - 1] += bearing.stiffness;
+      }
+    }
+    if (split) {
+      const std::size_t d = static_cast<std::size_t>(direction - 1);
+      trial_.walls[d] = walls.state;
+      trial_.wall_strain[d] = walls.strain;
+      trial_.opening[d] = opening;
+      trial_.wall_force[d] = walls.force;
+      const double sum = faces[0].stiffness + faces[1].stiffness;
+      const double difference = faces[0].stiffness - faces[1].stiffness;
+      const double opening_stiffness = walls.stiffness + 0.25 * sum; // D
+      if (!(std::abs(opening_stiffness) > 0.0)) {
+        failure = "casing contact: the casing's split has no stiffness (walls and faces softened)";
         return false;
       }
-      trial_.faces[face] = response.state;
-      trial_.bearing_strain[face] = strain;
-      const double bearing_force = -area * response.stress; // >= 0, pushes the core back
-      const double stiffness = area * response.tangent / depth;
-      const double sign = side == 0 ? 1.0 : -1.0; // dp/dr
-      local_force[direction] += sign * bearing_force;
-      local_tangent(direction, direction) += stiffness;
-      normal_force += bearing_force;
-      normal_rate[direction] += sign * stiffness;
-      direction_force[direction - 1] += bearing_force;
-      direction_stiffness[direction - 1] += stiffness;
-      trial_.face_force[face] = bearing_force;
-      in_contact_ = in_contact_ || bearing_force > 0.0;
+      const double kept = 1.0 - 0.25 * sum / opening_stiffness;
+      local_tangent(direction, direction) +=
+          sum - 0.25 * difference * difference / opening_stiffness;
+      normal_rate[direction] += difference * kept;
+      direction_stiffness[direction - 1] += sum * kept;
     }
     // unbonding layer: always active
     local_force[direction] += parameters_.layer_stiffness * relative[direction];
@@ -286,6 +336,85 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     add_expansion_terms(core_chord, direction_force, direction_stiffness, normal_rate,
                         friction.tangent(1, 0), force, tangent);
   return true;
+}
+
+CasingContact::FaceBearing CasingContact::bear(int face, double face_penetration,
+                                               std::string& failure) const {
+  FaceBearing result;
+  if (!(face_penetration > 0.0))
+    return result;
+  const int direction = 1 + face / 2;
+  const double area = direction == 1 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
+  const double depth = direction == 1 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
+  result.loaded = true;
+  result.strain = -face_penetration / depth;
+  const auto response = bearing_[static_cast<std::size_t>(direction - 1)].evaluate(
+      committed_.faces[face], result.strain);
+  result.state = response.state;
+  result.force = -area * response.stress; // >= 0, pushes the core back
+  result.stiffness = area * response.tangent / depth;
+  if (!std::isfinite(result.force) || !std::isfinite(result.stiffness)) {
+    failure = "casing contact: non-finite bearing stress";
+    result.force = std::numeric_limits<double>::quiet_NaN();
+  }
+  return result;
+}
+
+CasingContact::WallResponse CasingContact::stretch_walls(int direction, double opening) const {
+  const CasingSplitting& splitting = *parameters_.splitting;
+  const std::size_t d = static_cast<std::size_t>(direction - 1);
+  const double area = direction == 1 ? splitting.wall_area_y : splitting.wall_area_z;
+  const double length = direction == 1 ? splitting.wall_length_y : splitting.wall_length_z;
+  WallResponse result;
+  result.strain = opening / length;
+  const auto response = walls_[d].evaluate(committed_.walls[d], result.strain);
+  result.state = response.state;
+  result.force = area * response.stress;
+  result.stiffness = area * response.tangent / length;
+  return result;
+}
+
+bool CasingContact::solve_split(int direction, const std::array<double, 2>& kinematic,
+                                std::array<FaceBearing, 2>& faces, WallResponse& walls,
+                                double& opening, std::string& failure) const {
+  // g(w) = T(w) - (F+(w) + F-(w)) / 2: g(0) < 0 (a face bears, the walls are unstretched),
+  // g(w_open) = T >= 0 (both faces open), so a root lies in between; Newton on
+  // dg/dw = dT/dw + (K+ + K-) / 4, bisection when a step leaves the bracket.
+  double lower = 0.0;
+  double upper = 2.0 * std::max(kinematic[0], kinematic[1]);
+  const int first_face = 2 * (direction - 1);
+  double trial =
+      std::clamp(committed_.opening[static_cast<std::size_t>(direction - 1)], lower, upper);
+  constexpr int kMaxIterations = 200;
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    for (int side = 0; side < 2; ++side)
+      faces[static_cast<std::size_t>(side)] =
+          bear(first_face + side, kinematic[side] - 0.5 * trial, failure);
+    walls = stretch_walls(direction, trial);
+    const double face_mean = 0.5 * (faces[0].force + faces[1].force);
+    const double residual = walls.force - face_mean;
+    if (!std::isfinite(residual) || !std::isfinite(walls.stiffness)) {
+      if (failure.empty())
+        failure = "casing contact: non-finite force in the casing's split walls";
+      return false;
+    }
+    opening = trial;
+    // converged to rounding of the forces, or the bracket is a few ulp wide
+    if (std::abs(residual) <= 1e-13 * (face_mean + std::abs(walls.force)) ||
+        upper - lower <= 1e-15 * upper)
+      return true;
+    if (residual < 0.0)
+      lower = trial;
+    else
+      upper = trial;
+    const double slope = walls.stiffness + 0.25 * (faces[0].stiffness + faces[1].stiffness);
+    double next = slope > 0.0 ? trial - residual / slope : 0.5 * (lower + upper);
+    if (!(next > lower && next < upper))
+      next = 0.5 * (lower + upper);
+    trial = next;
+  }
+  failure = "casing contact: the casing's split opening did not converge";
+  return false;
 }
 
 void CasingContact::add_expansion_terms(const Chord& core_chord,
@@ -369,6 +498,14 @@ ElementEnergy CasingContact::energy() const {
         volume * bearing_[direction].free_energy(trial_.faces[face], trial_.bearing_strain[face]);
     energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.faces[face]);
   }
+  for (std::size_t d = 0; d < walls_.size(); ++d) {
+    // the walls' volume: area x L_w
+    const CasingSplitting& splitting = *parameters_.splitting;
+    const double volume = d == 0 ? splitting.wall_area_y * splitting.wall_length_y
+                                 : splitting.wall_area_z * splitting.wall_length_z;
+    energy.stored += volume * walls_[d].free_energy(trial_.walls[d], trial_.wall_strain[d]);
+    energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.walls[d]);
+  }
   // friction: the stick spring's energy is stored, the slip work dissipated
   const double stick = relative[0] - trial_.friction.slip[0];
   energy.stored += 0.5 * parameters_.tangential_stiffness * stick * stick;
@@ -380,11 +517,17 @@ ElementEnergy CasingContact::energy() const {
 void CasingContact::mark_path_point() {
   for (std::size_t face = 0; face < path_damage_.size(); ++face)
     path_damage_[face] = trial_.faces[face].damage;
+  for (std::size_t d = 0; d < path_wall_damage_.size(); ++d)
+    path_wall_damage_[d] = trial_.walls[d].damage;
 }
 
 bool CasingContact::jumped_past_peak() const {
   for (std::size_t face = 0; face < path_damage_.size(); ++face) {
     if (path_damage_[face] < kPathIntactDamage && trial_.faces[face].damage > kPathCrushedDamage)
+      return true;
+  }
+  for (std::size_t d = 0; d < path_wall_damage_.size(); ++d) {
+    if (path_wall_damage_[d] < kPathIntactDamage && trial_.walls[d].damage > kPathCrushedDamage)
       return true;
   }
   return false;
@@ -394,6 +537,8 @@ double CasingContact::max_mortar_damage() const {
   double worst = 0.0;
   for (const auto& face : trial_.faces)
     worst = std::max(worst, face.damage);
+  for (const auto& wall : trial_.walls) // 0 without CasingSplitting
+    worst = std::max(worst, wall.damage);
   return worst;
 }
 

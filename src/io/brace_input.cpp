@@ -212,10 +212,10 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
                               const std::optional<model::ZoneSpec>& transition) {
   object.expect_object({"tube", "outline", "tube_steel", "mortar", "gap", "friction",
                         "layer_stiffness", "fill_fibers", "stopper", "overlap", "core_expansion",
-                        "high_mode_waves"},
+                        "high_mode_waves", "splitting"},
                        "a casing object {tube or outline, tube_steel, mortar, gap, friction, "
                        "layer_stiffness, fill_fibers, stopper, overlap, core_expansion, "
-                       "high_mode_waves} or null");
+                       "high_mode_waves, splitting} or null");
   model::CasingSpec casing;
   const auto outline = object.find("outline");
   if (outline && object.find("tube")) {
@@ -281,6 +281,17 @@ model::CasingSpec read_casing(const JsonValue& object, const SectionSpec& core,
       throw expansion->error("the core expansion nu_c must be in [0, 0.5] (0: off, 0.5: plastic "
                              "incompressibility; got " +
                              describe_json_value(expansion->json()) + ")");
+    }
+  }
+  if (const auto splitting = object.find("splitting")) {
+    if (!splitting->json().is_boolean()) {
+      throw splitting->error("splitting must be true or false (got " +
+                             describe_json_value(splitting->json()) + ")");
+    }
+    casing.splitting = splitting->json().get<bool>();
+    if (casing.splitting && casing.steel_tube) {
+      throw splitting->error("splitting is a mortar-only casing's (\"outline\"); a steel tube "
+                             "holds the split: remove the key or set it false");
     }
   }
   if (const auto waves = object.find("high_mode_waves")) {

@@ -210,6 +210,17 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
         std::max(link.bearing_area_y, link.bearing_area_z * (thickness_y / thickness_z)) /
         thickness_y;
     link.tangential_stiffness = casing.tangential_stiffness_ratio * bearing_stiffness;
+    if (!casing.steel_tube && casing.splitting) {
+      // the walls beside the opening (outline minus core and clearances) hold the two halves
+      // that a direction's faces bear on; they stretch over the outline's extent
+      const auto [outline_y, outline_z] = core_extent(casing.tube);
+      element::CasingSplitting split;
+      split.wall_area_y = (outline_z - extent_z - 2.0 * casing.gap_z) * tributary;
+      split.wall_area_z = (outline_y - extent_y - 2.0 * casing.gap_y) * tributary;
+      split.wall_length_y = outline_y;
+      split.wall_length_z = outline_z;
+      link.splitting = split;
+    }
     const int core = result.core_nodes[n], shell = result.nodes[n];
     // The core's expansion from the chord of its neighbour stations (at an end station the
     // station itself is one end); nu_c = 0 leaves the two-node link.

@@ -384,43 +384,15 @@ TEST(CasingContactExpansion, WorkEqualsStoredPlusDissipatedAlongALoadingPath) {
   auto parameters = small_brb_contact(10.0);
   parameters.axes = Eigen::AngleAxisd(0.7, Vector3(1.0, 2.0, 0.5).normalized()).toRotationMatrix();
   ExpansionProbe probe(parameters, 10.0, 20.0);
-  const int steps = 40000;
-  double work = 0.0;
-  Eigen::VectorXd previous_force;
-  std::vector<NodeConfiguration> previous_nodes;
-  int both_faces = 0, open = 0;
-  double max_damage = 0.0;
-  double largest_mismatch = 0.0;
-  for (int k = 0; k <= steps; ++k) {
-    const double t = 2.0 * std::numbers::pi * k / steps;
-    const Vector3 core(0.5 * std::sin(t), 0.05 * std::sin(2.0 * t), 0.2 * std::sin(3.0 * t));
-    const double strain = -0.06 * std::sin(0.5 * t) * std::sin(0.5 * t) + 0.01 * std::sin(5.0 * t);
-    probe.place(core, strain, Vector3(0.0, 0.1 * std::sin(t), 0.0), Vector3::Zero());
-    probe.evaluate();
-    if (k > 0) {
-      for (std::size_t n = 0; n < probe.nodes.size(); ++n) {
-        const auto i = 6 * static_cast<Eigen::Index>(n);
-        work += 0.5 * (previous_force.segment<3>(i) + probe.force.segment<3>(i))
-                          .dot(probe.nodes[n].position - previous_nodes[n].position);
-      }
-    }
-    probe.contact.commit();
-    const ElementEnergy now = probe.contact.energy();
-    largest_mismatch = std::max(largest_mismatch, std::abs(work - now.stored - now.dissipated));
-    previous_force = probe.force;
-    previous_nodes = probe.nodes;
-    const auto& faces = probe.contact.face_forces();
-    both_faces += (faces[0] > 0.0 && faces[1] > 0.0) || (faces[2] > 0.0 && faces[3] > 0.0);
-    open += !probe.contact.in_contact();
-    max_damage = std::max(max_damage, probe.contact.max_mortar_damage());
-  }
+  const ExpansionProbe::PathWalk walk = probe.walk_energy_path(40000, 0.2, 0.06);
+  const double work = walk.work;
   const ElementEnergy energy = probe.contact.energy();
-  EXPECT_GT(both_faces, 1000);
-  EXPECT_GT(open, 1000);
-  EXPECT_GT(max_damage, 0.5);
+  EXPECT_GT(walk.both_faces, 1000);
+  EXPECT_GT(walk.open, 1000);
+  EXPECT_GT(walk.max_damage, 0.5);
   EXPECT_GT(energy.dissipated, 0.0);
   EXPECT_NEAR(work, energy.stored + energy.dissipated, 1e-4 * work);
-  EXPECT_LT(largest_mismatch, 1e-4 * work); // at every point of the path, stored > 0 or not
+  EXPECT_LT(walk.largest_mismatch, 1e-4 * work); // at every point of the path, stored > 0 or not
 }
 
 TEST(CasingContact, StressWorkIsTheNodalForcesTrapezoidalWorkAndItsMisfitTheGapClosing) {

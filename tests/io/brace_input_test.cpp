@@ -405,6 +405,23 @@ TEST(BraceInput, MortarOnlyCasingTakesAnOutline) {
   const auto& section = built.casing->beams.front()->local_beam().sections().front();
   EXPECT_EQ(section.first().layout().size(), 0u);
   EXPECT_NEAR(section.second().layout().total_area(), 900.0 - 10.1 * 10.1, 1e-9);
+  // Rigid across by default; "splitting": true (element::CasingSplitting) gives each link
+  // the walls beside the opening, (30 - 10 - 2 x 0.05) mm x the tributary length, stretched
+  // over the outline's 30 mm. A tube casing never splits.
+  EXPECT_FALSE(spec.casing->splitting);
+  EXPECT_FALSE(built.casing->interior_link.splitting.has_value());
+  json split = brace;
+  split["casing"]["splitting"] = true;
+  const model::BraceModel split_model =
+      model::build_brace_model(parse_brace(split.dump(), "small.json"));
+  const auto& interior = split_model.casing->interior_link;
+  ASSERT_TRUE(interior.splitting.has_value());
+  const double tributary =
+      split_model.casing->tributary_length[split_model.casing->tributary_length.size() / 2];
+  EXPECT_NEAR(interior.splitting->wall_area_y, 19.9 * tributary, 1e-9);
+  EXPECT_NEAR(interior.splitting->wall_area_z, 19.9 * tributary, 1e-9);
+  EXPECT_EQ(interior.splitting->wall_length_y, 30.0);
+  EXPECT_EQ(interior.splitting->wall_length_z, 30.0);
 }
 
 TEST(BraceInput, MortarOnlyCasingRejectsTubeSteelAndOtherShapes) {
@@ -438,6 +455,18 @@ TEST(BraceInput, MortarOnlyCasingRejectsTubeSteelAndOtherShapes) {
   json thin = base;
   thin["casing"]["outline"]["width"] = 10.05; // no room for 10 mm + 2 x 0.05 mm
   expect_rejected(thin, "/casing/outline", "casing too thin");
+  json word = base;
+  word["casing"]["splitting"] = "yes";
+  expect_rejected(word, "/casing/splitting", "true or false");
+  json tube = base;
+  tube["casing"].erase("outline");
+  tube["casing"]["tube"] = {
+      {"shape", "rectangular_tube"}, {"width", 40.0}, {"depth", 40.0}, {"wall", 3.0}};
+  tube["casing"]["tube_steel"] = s275();
+  tube["casing"]["splitting"] = true;
+  expect_rejected(tube, "/casing/splitting", "a steel tube holds the split");
+  tube["casing"]["splitting"] = false; // allowed: the tube casing does not split anyway
+  EXPECT_FALSE(parse_brace(tube.dump(), "tube.json").casing->splitting);
 }
 
 TEST(BraceInput, ReadsAFileAsItsText) {

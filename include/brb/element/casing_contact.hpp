@@ -41,6 +41,33 @@
 
 namespace brb::element {
 
+/// Splitting of a mortar-only casing (issue 4/6: the thesis's small BRB, BRB_SOURCE_FACTS
+/// section 6). The two faces of a direction bear on the two halves of the casing, which only
+/// the mortar walls beside the core's opening hold together; a core pressing both faces (its
+/// expansion, or a bearing on one face, half of which the walls carry) pulls those walls
+/// apart. Measured on brb solid (solid_small_case1_gap0, session 25): the mortar cracks at a
+/// contact pressure of about 9 MPa, far below the bearing's crushing at f_c = 40 MPa, and the
+/// pressure then stays near 14 MPa. Model: per direction the casing's inner opening grows by
+/// w >= 0 (w / 2 at each face), so the faces' penetrations are p(+-) = +-r - g + e - w / 2,
+/// and the walls stretch by w over their length L_w (the casing's extent in that direction)
+/// following the mortar damage law (tension: f_t, then softening with G_f over L_w). w is
+/// internal: the energy's stationarity in w gives the walls' force T(w) = (F+ + F-) / 2
+/// (the faces' forces' symmetric part; the antisymmetric part moves the casing as a beam),
+/// solved per direction in the link, and the tangent is condensed over w. With a steel tube
+/// the tube holds the split (not modelled: the casing is rigid across, as without this).
+struct CasingSplitting {
+  /// Mortar that the split of the y faces pulls apart: the walls beside the opening along
+  /// z, (casing extent along z - opening along z) x tributary length (mm^2); and of z.
+  double wall_area_y = 0.0;
+  double wall_area_z = 0.0;
+  /// L_w of the y faces' split: the casing's extent along y (mm); and along z.
+  double wall_length_y = 0.0;
+  double wall_length_z = 0.0;
+
+  /// Throws ParameterError naming the key (wall_area_y, ...).
+  void validate() const;
+};
+
 struct CasingContactParameters {
   Matrix3 axes = Matrix3::Identity(); ///< columns: brace axis, section y, section z (global)
   double gap_y = 0.0;                 ///< clearance on each side along y (mm), >= 0
@@ -51,10 +78,11 @@ struct CasingContactParameters {
   /// mortar's thickness in that direction (a plate core in a square tube has two).
   double bearing_depth_y = 0.0;
   double bearing_depth_z = 0.0;
-  material::MortarParameters mortar; ///< bearing law
-  double layer_stiffness = 0.0;      ///< unbonding layer spring per direction (N/mm), >= 0
-  double friction_coefficient = 0.1; ///< kappa (source: 0.1)
-  double tangential_stiffness = 0.0; ///< stick penalty along the axis (N/mm)
+  material::MortarParameters mortar;        ///< bearing law
+  double layer_stiffness = 0.0;             ///< unbonding layer spring per direction (N/mm), >= 0
+  double friction_coefficient = 0.1;        ///< kappa (source: 0.1)
+  double tangential_stiffness = 0.0;        ///< stick penalty along the axis (N/mm)
+  std::optional<CasingSplitting> splitting; ///< a mortar-only casing's split (none: rigid)
 
   /// Throws ParameterError naming the key (gap_y, gap_z, bearing_area_y, ...).
   void validate() const;
@@ -161,8 +189,17 @@ public:
   static constexpr double kPathIntactDamage = 0.05;
   static constexpr double kPathCrushedDamage = 0.5;
 
-  /// Largest mortar damage over the four faces (trial state).
+  /// Largest mortar damage over the four faces and the split walls (trial state).
   double max_mortar_damage() const;
+  /// The casing's split opening w per direction, y and z (mm, >= 0; trial state; 0 without
+  /// CasingSplitting).
+  const std::array<double, 2>& split_opening() const { return trial_.opening; }
+  /// The split walls' force T per direction (N, >= 0; trial state).
+  const std::array<double, 2>& split_force() const { return trial_.wall_force; }
+  /// The split walls' damage per direction (trial state).
+  std::array<double, 2> split_damage() const {
+    return {trial_.walls[0].damage, trial_.walls[1].damage};
+  }
   /// Whether any face is in contact (trial state).
   bool in_contact() const { return in_contact_; }
   /// Evaluations that took the open-link path (for the benchmark and its tests).
@@ -173,6 +210,12 @@ private:
     std::array<material::MortarState, 4> faces{}; ///< +y, -y, +z, -z
     material::FrictionState friction;
     std::array<double, 4> bearing_strain{}; ///< for the free energy
+    // CasingSplitting: per direction the walls' law state, strain w / L_w, the opening w
+    // (mm) and the walls' force T (N).
+    std::array<material::MortarState, 2> walls{};
+    std::array<double, 2> wall_strain{};
+    std::array<double, 2> opening{};
+    std::array<double, 2> wall_force{};
     /// Local relative displacement of the core from the casing (axis, y, z; mm).
     Vector3 relative = Vector3::Zero();
     /// Resisting force on the core (friction along the axis, bearing + layer along y, z; N).
@@ -212,10 +255,14 @@ private:
   /// Bearing law of the y faces and of the z faces (their characteristic lengths are the
   /// bearing depths, so that crushing dissipates G_f per unit area of face).
   std::array<material::MortarUniaxial, 2> bearing_;
+  /// The split walls' law per direction (characteristic length L_w: G_f per unit area of
+  /// the crack through the walls); empty without CasingSplitting.
+  std::vector<material::MortarUniaxial> walls_;
   material::PenaltyFriction friction_;
   State committed_;
   State trial_;
-  std::array<double, 4> path_damage_{}; ///< faces' damage at the last path point
+  std::array<double, 4> path_damage_{};      ///< faces' damage at the last path point
+  std::array<double, 2> path_wall_damage_{}; ///< split walls' damage at the last path point
   Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;
@@ -223,6 +270,30 @@ private:
   long open_evaluations_ = 0;
 
   bool has_expansion() const { return chord_ends_[0] >= 0; }
+  /// A face's bearing at penetration p: force F (>= 0), stiffness dF/dp, law state and strain.
+  struct FaceBearing {
+    double force = 0.0;
+    double stiffness = 0.0;
+    material::MortarState state;
+    double strain = 0.0;
+    bool loaded = false; ///< p > 0
+  };
+  FaceBearing bear(int face, double face_penetration, std::string& failure) const;
+  /// The split walls of a direction (1: y, 2: z) at opening w: force T and dT/dw.
+  struct WallResponse {
+    double force = 0.0;
+    double stiffness = 0.0;
+    material::MortarState state;
+    double strain = 0.0;
+  };
+  WallResponse stretch_walls(int direction, double opening) const;
+  /// Solves T(w) = (F+(w) + F-(w)) / 2 for the direction's opening w in [0, w_open] (faces'
+  /// kinematic penetrations p_kin; w_open = 2 max p_kin opens both faces), bracketed Newton
+  /// from the committed opening. Returns false (with `failure`) if a law gives a non-finite
+  /// value.
+  bool solve_split(int direction, const std::array<double, 2>& kinematic,
+                   std::array<FaceBearing, 2>& faces, WallResponse& walls, double& opening,
+                   std::string& failure) const;
   Chord chord(std::span<const NodeConfiguration> configuration) const;
   /// Penetration of a face (0: +y, 1: -y, 2: +z, 3: -z) at the trial relative displacement and
   /// expansion_ (shared by the open test and the general path so that they decide alike).

@@ -80,6 +80,11 @@ struct CasingSpec {
   /// opt-in"): on Girona D1 with 8 elements, nu_c = 0.5 sends a bowed core onto a branch
   /// that punches a bearing face through at 0.75 d_y, where nu_c = 0 and 1e-9 do not.
   double core_expansion = 0.0;
+  /// A mortar-only casing splits (element::CasingSplitting): the core pressing its faces
+  /// pulls the mortar walls beside its opening apart (tension cracking at f_t, far below the
+  /// bearing's crushing). Opt-in (default false) while the solver cannot follow the collapse
+  /// it leads to (README, "Casing splitting"); a steel tube casing never splits (the tube holds).
+  bool splitting = false;
   /// Sub-element high-mode waves (element::HighModeWaves): the friction of the core's
   /// buckling waves shorter than two core elements. The value is the crest factor c (4: the
   /// half-wave's moment equilibrium, kDefaultCrestFactor); absent (the default): off.
