@@ -179,12 +179,13 @@ public:
   double wave_normal_force() const { return trial_.wave_normal_force; }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
-  /// Path control (Element::mark_path_point): the faces' damage at the last path point.
+  /// Path control (Element::mark_path_point): the faces' and the split walls' damage at the
+  /// last path point.
   void mark_path_point() override;
-  /// A face intact at the last path point (damage below kPathIntactDamage) is crushed now
-  /// (damage above kPathCrushedDamage): its bearing went from below its peak force to far
-  /// past it with no point in between (the mortar's damage grows continuously from 0 at the
-  /// peak, MortarUniaxial).
+  /// A face (or a split wall) intact at the last path point (damage below kPathIntactDamage)
+  /// is crushed (cracked) now (damage above kPathCrushedDamage): its force went from below its
+  /// peak to far past it with no point in between (the mortar's damage grows continuously
+  /// from 0 at the peak, MortarUniaxial).
   bool jumped_past_peak() const override;
   static constexpr double kPathIntactDamage = 0.05;
   static constexpr double kPathCrushedDamage = 0.5;
