@@ -111,8 +111,9 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     }
     indicators.max_casing_lateral_displacement =
         std::max(indicators.max_casing_lateral_displacement, casing_lateral);
-    // Casing failure: the mortar under a station crushed through; or, in a mortar-only
-    // casing (the thesis's small BRB), the casing itself cracked or crushed through. In a
+    // Casing failure: the mortar under a station crushed through (or, with casing/splitting,
+    // its walls split through: max_bearing_damage holds both); or, in a mortar-only casing
+    // (the thesis's small BRB), the casing itself cracked or crushed through. In a
     // steel tube the fill cracks as soon as the casing bends, and the tube still holds.
     if (indicators.max_bearing_damage >= kCrushedDamage ||
         (!casing.steel_tube && fill_damage >= kCrushedDamage))

@@ -24,10 +24,11 @@ namespace brb::analysis {
 struct BraceIndicators {
   double max_steel_damage = 0.0;  ///< largest damage of a core fiber
   double max_mortar_damage = 0.0; ///< largest damage of a bearing face or mortar fill fiber
-  /// Largest damage of the mortar under a station (the contact links' bearing faces), the
-  /// crushing that casing_failure flags. The fill fibers of the casing beams are left out:
-  /// they crack in tension as soon as the casing bends (strain ft / E, about 1.3e-4), which
-  /// in a steel tube is not a casing failure (in a mortar-only casing it is: the flag's rule).
+  /// Largest damage of the mortar under a station (the contact links' bearing faces and, with
+  /// casing/splitting, the split walls beside the opening), which casing_failure flags. The fill
+  /// fibers of the casing beams are left out: they crack in tension as soon as the casing bends
+  /// (strain ft / E, about 1.3e-4), which in a steel tube is not a casing failure (in a mortar-only
+  /// casing it is: the flag's rule).
   double max_bearing_damage = 0.0;
   double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
   double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
