@@ -264,7 +264,7 @@ bool CasingContact::evaluate(std::span<const NodeConfiguration> configuration,
     const bool split = !walls_.empty() && (kinematic[0] > 0.0 || kinematic[1] > 0.0);
     std::array<FaceBearing, 2> faces;
     WallResponse walls;
-    double opening = 0.0;
+    double opening = path_opening_[static_cast<std::size_t>(direction - 1)];
     if (split) {
       if (!solve_split(direction, kinematic, faces, walls, opening, failure))
         return false;
@@ -383,8 +383,7 @@ bool CasingContact::solve_split(int direction, const std::array<double, 2>& kine
   double lower = 0.0;
   double upper = 2.0 * std::max(kinematic[0], kinematic[1]);
   const int first_face = 2 * (direction - 1);
-  double trial =
-      std::clamp(committed_.opening[static_cast<std::size_t>(direction - 1)], lower, upper);
+  double trial = std::clamp(opening, lower, upper);
   constexpr int kMaxIterations = 200;
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     for (int side = 0; side < 2; ++side)
@@ -519,6 +518,7 @@ void CasingContact::mark_path_point() {
     path_damage_[face] = trial_.faces[face].damage;
   for (std::size_t d = 0; d < path_wall_damage_.size(); ++d)
     path_wall_damage_[d] = trial_.walls[d].damage;
+  path_opening_ = trial_.opening;
 }
 
 bool CasingContact::jumped_past_peak() const {

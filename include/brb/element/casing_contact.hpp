@@ -160,8 +160,14 @@ public:
   std::span<const int> nodes() const override { return nodes_; }
   bool evaluate(std::span<const NodeConfiguration> configuration, Eigen::VectorXd& force,
                 Eigen::MatrixXd& tangent, std::string& failure) override;
-  void commit() override { committed_ = trial_; }
-  void revert_to_committed() override { trial_ = committed_; }
+  void commit() override {
+    committed_ = trial_;
+    path_opening_ = committed_.opening;
+  }
+  void revert_to_committed() override {
+    trial_ = committed_;
+    path_opening_ = committed_.opening;
+  }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   ElementEnergy energy() const override;
 
@@ -179,8 +185,8 @@ public:
   double wave_normal_force() const { return trial_.wave_normal_force; }
   /// The core's half-extent growth e_y, e_z (mm; trial state; 0 without expansion).
   const Eigen::Vector2d& core_expansion() const { return expansion_; }
-  /// Path control (Element::mark_path_point): the faces' and the split walls' damage at the
-  /// last path point.
+  /// Path control (Element::mark_path_point): the faces' and the split walls' damage and the
+  /// split opening at the last path point.
   void mark_path_point() override;
   /// A face (or a split wall) intact at the last path point (damage below kPathIntactDamage)
   /// is crushed (cracked) now (damage above kPathCrushedDamage): its force went from below its
@@ -264,6 +270,12 @@ private:
   State trial_;
   std::array<double, 4> path_damage_{};      ///< faces' damage at the last path point
   std::array<double, 2> path_wall_damage_{}; ///< split walls' damage at the last path point
+  /// Split opening per direction at the last path point (or at the committed state, if no
+  /// point was marked since): where solve_split starts. A crushed face can give the opening
+  /// equation several roots; starting from the path's last opening keeps the solve on the
+  /// root the path is on (from the committed opening it jumped to another, and the path
+  /// control refused every pseudo-time step: validation/README, casing splitting).
+  std::array<double, 2> path_opening_{};
   Eigen::Vector2d expansion_ = Eigen::Vector2d::Zero();
   bool in_contact_ = false;
   bool skip_open_links_ = true;
@@ -290,8 +302,8 @@ private:
   WallResponse stretch_walls(int direction, double opening) const;
   /// Solves T(w) = (F+(w) + F-(w)) / 2 for the direction's opening w in [0, w_open] (faces'
   /// kinematic penetrations p_kin; w_open = 2 max p_kin opens both faces), bracketed Newton
-  /// from the committed opening. Returns false (with `failure`) if a law gives a non-finite
-  /// value.
+  /// from `opening` (in: the start, path_opening_; out: the root). Returns false (with `failure`)
+  /// if a law gives a non-finite value.
   bool solve_split(int direction, const std::array<double, 2>& kinematic,
                    std::array<FaceBearing, 2>& faces, WallResponse& walls, double& opening,
                    std::string& failure) const;
