@@ -13,13 +13,13 @@
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/brace_input.hpp"
 #include "brb/model/brace_model.hpp"
+#include "support/monotonic_shortening.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <string>
-#include <vector>
 
 namespace brb::analysis {
 namespace {
@@ -34,12 +34,7 @@ TEST(CasingCrackThrough, TheSmallBracesMortarCasingCracksThroughAndTheCoreBuckle
   // against between -5.609 and -5.674 mm here)
   const double target = -6.0;
   const int steps = static_cast<int>(std::ceil(-target / (0.5 * dy)));
-  std::vector<double> deformation;
-  for (int k = 0; k <= steps; ++k)
-    deformation.push_back(target * k / steps);
-  const std::vector<int> cycle(deformation.size(), 1);
-  const std::vector<double> amplitude{-target};
-  const CyclicTestResult result = run_cyclic_test(brace, deformation, cycle, amplitude);
+  const CyclicTestResult result = test::run_monotonic(brace, target, steps);
   std::cout << "[ crack ] peak compression " << result.max_compression << " N, at -6 mm "
             << result.steps.back().force << " N; lateral "
             << result.indicators.max_casing_lateral_displacement << " mm; beams on uniform strain "

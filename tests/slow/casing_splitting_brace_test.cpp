@@ -10,6 +10,7 @@
 #include "brb/analysis/cyclic_test.hpp"
 #include "brb/io/brace_input.hpp"
 #include "brb/model/brace_model.hpp"
+#include "support/monotonic_shortening.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,7 +20,6 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <vector>
 
 namespace brb::analysis {
 namespace {
@@ -39,13 +39,8 @@ SplitRun shorten(bool splitting, double target) {
   spec.casing->splitting = splitting;
   model::BraceModel brace = model::build_brace_model(spec);
   const int steps = static_cast<int>(std::ceil(-target / (0.1 * brace.yield_deformation)));
-  std::vector<double> deformation;
-  for (int k = 0; k <= steps; ++k)
-    deformation.push_back(target * k / steps);
-  const std::vector<int> cycle(deformation.size(), 1);
-  const std::vector<double> amplitude{-target};
   SplitRun run;
-  run.result = run_cyclic_test(brace, deformation, cycle, amplitude);
+  run.result = test::run_monotonic(brace, target, steps);
   for (std::size_t n = 0; n < brace.casing->contacts.size(); ++n) {
     const element::CasingContact& link = *brace.casing->contacts[n];
     // a y face bears over the tributary length times the core's 10 mm
@@ -125,13 +120,7 @@ TEST(CasingSplittingBrace, CaseOneWithTheSplitCasingBucklesAsAWholeAndTheRunGoes
   spec.casing->splitting = true;
   model::BraceModel brace = model::build_brace_model(spec);
   const double target = -38.0 * brace.yield_deformation;
-  constexpr int kSteps = 380;
-  std::vector<double> deformation;
-  for (int k = 0; k <= kSteps; ++k)
-    deformation.push_back(target * k / kSteps);
-  const std::vector<int> cycle(deformation.size(), 1);
-  const std::vector<double> amplitude{-target};
-  const CyclicTestResult result = run_cyclic_test(brace, deformation, cycle, amplitude);
+  const CyclicTestResult result = test::run_monotonic(brace, target, 380);
   double largest_wall_damage = 0.0;
   for (const auto& link : brace.casing->contacts) {
     const auto damage = link->split_damage();
