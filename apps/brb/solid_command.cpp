@@ -95,6 +95,9 @@ nlohmann::ordered_json solid_block(const SolidCommand& command, const model::Sol
   block["nodes"] = run.nodes;
   block["elements"] = run.elements;
   block["half_length"] = mesh.half_length;
+  block["end_faces"] = mesh.end_faces == model::SolidEndFaces::pinned    ? "pinned"
+                       : mesh.end_faces == model::SolidEndFaces::clamped ? "clamped"
+                                                                         : "centre_lines";
   block["mass_scaling"] = mesh.mass_scaling;
   block["threads"] = command.threads.value_or(mesh.threads);
   block["time_step_s"] = run.time_step;
@@ -176,11 +179,15 @@ CLI::App* add_solid_command(CLI::App& app, SolidCommand& command) {
                    "Also write the fields of every N-th step (and the last); 0: off")
       ->check(CLI::NonNegativeNumber)
       ->type_name("N");
+  solid->add_flag("--histories", command.histories,
+                  "Also write element_history.csv: the element outputs (damage, residual "
+                  "strength, flags) after every step, as brb cyclic --histories");
   solid->footer(
       "Outputs (README, \"brb solid\"):\n"
       "  hysteresis.csv, summary.json: as brb cyclic (summary.json adds a \"solid\" block:\n"
       "    mesh, time step, energy ratios, run time)\n"
       "  energies.csv: time, force and the energies of every output record\n"
+      "  element_history.csv (with --histories): the element outputs after every step\n"
       "  fields/step_K.vtu, fields.pvd (with --snapshots or --snapshot-every): ParaView\n"
       "Units: N, mm, s, MPa. Exit status: 0 completed, 1 the run stopped early (what was\n"
       "computed is written) or failed, 2 invalid input or usage (nothing written).");
@@ -242,6 +249,9 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
   const fs::path energies = command.output_directory / "energies.csv";
   io::write_file_atomically(hysteresis, io::hysteresis_table(result.cyclic).text());
   io::write_file_atomically(energies, energy_table(result.run).text());
+  if (command.histories)
+    io::write_file_atomically(command.output_directory / "element_history.csv",
+                              io::element_history_table(result.cyclic).text());
   nlohmann::ordered_json summary_json =
       io::cyclic_summary_json(name, dy, reduced.yield_force, result.cyclic);
   summary_json["solid"] = solid_block(command, mesh, result, seconds);
@@ -266,12 +276,17 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
          << ", max energy-balance error " << significant(result.max_energy_error, 3) << "\n"
          << "  indicators: max steel damage "
          << significant(result.cyclic.indicators.max_steel_damage, 3) << ", max mortar damage "
-         << significant(result.cyclic.indicators.max_mortar_damage, 3) << ", casing failure "
-         << (result.cyclic.indicators.casing_failure ? "yes" : "no") << ", global buckling "
-         << (result.cyclic.indicators.global_buckling ? "yes" : "no") << "\n"
+         << significant(result.cyclic.indicators.max_mortar_damage, 3)
+         << ", least bearing residual strength "
+         << significant(result.cyclic.indicators.min_bearing_residual_strength, 3)
+         << ", casing failure " << (result.cyclic.indicators.casing_failure ? "yes" : "no")
+         << ", global buckling " << (result.cyclic.indicators.global_buckling ? "yes" : "no")
+         << "\n"
          << "  run time " << significant(seconds, 4) << " s\n"
          << "  wrote " << hysteresis.string() << "\n        " << summary.string() << "\n        "
          << energies.string() << "\n";
+  if (command.histories)
+    report << "        " << (command.output_directory / "element_history.csv").string() << "\n";
   if (!written.empty())
     report << "        " << (command.output_directory / "fields.pvd").string() << " ("
            << written.size() << " snapshots)\n";

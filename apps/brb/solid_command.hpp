@@ -22,6 +22,7 @@ struct SolidCommand {
   std::optional<int> threads;             ///< overrides the solid block's threads
   std::vector<int> snapshot_steps;        ///< hysteresis steps written as .vtu
   int snapshot_every = 0;                 ///< also every N-th step (0: off)
+  bool histories = false;                 ///< write element_history.csv
 };
 
 CLI::App* add_solid_command(CLI::App& app, SolidCommand& command);

@@ -86,16 +86,20 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     for (const auto* contact : casing.contacts) {
       indicators.max_bearing_damage =
           std::max(indicators.max_bearing_damage, contact->max_mortar_damage());
+      indicators.min_bearing_residual_strength =
+          std::min(indicators.min_bearing_residual_strength, contact->min_residual_strength());
     }
     indicators.max_mortar_damage =
         std::max(indicators.max_mortar_damage, indicators.max_bearing_damage);
-    double fill_damage = 0.0;
     for (const auto* beam : casing.beams) {
-      for (const auto& section : beam->local_beam().sections())
-        fill_damage = std::max(fill_damage, section.max_damage());
+      for (const auto& section : beam->local_beam().sections()) {
+        indicators.max_mortar_damage =
+            std::max(indicators.max_mortar_damage, section.second().max_damage());
+        indicators.min_fill_residual_strength = std::min(indicators.min_fill_residual_strength,
+                                                         section.second().min_residual_strength());
+      }
       count_uniform(*beam);
     }
-    indicators.max_mortar_damage = std::max(indicators.max_mortar_damage, fill_damage);
     const auto& link = casing.interior_link;
     for (std::size_t s = 0; s < casing.nodes.size(); ++s) {
       const int casing_node = casing.nodes[s];
@@ -112,11 +116,11 @@ void BraceIndicatorTracker::observe(const Positions& position, double deformatio
     indicators.max_casing_lateral_displacement =
         std::max(indicators.max_casing_lateral_displacement, casing_lateral);
     // Casing failure: the mortar under a station crushed through (or, with casing/splitting,
-    // its walls split through: max_bearing_damage holds both); or, in a mortar-only casing
-    // (the thesis's small BRB), the casing itself cracked or crushed through. In a
+    // its walls split through: min_bearing_residual_strength holds both); or, in a mortar-only
+    // casing (the thesis's small BRB), the casing itself cracked or crushed through. In a
     // steel tube the fill cracks as soon as the casing bends, and the tube still holds.
-    if (indicators.max_bearing_damage >= kCrushedDamage ||
-        (!casing.steel_tube && fill_damage >= kCrushedDamage))
+    if (indicators.min_bearing_residual_strength <= kCrushedResidualStrength ||
+        (!casing.steel_tube && indicators.min_fill_residual_strength <= kCrushedResidualStrength))
       indicators.casing_failure = true;
   } else {
     for (const int node : brace.nodes)

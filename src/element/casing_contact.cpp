@@ -542,4 +542,15 @@ double CasingContact::max_mortar_damage() const {
   return worst;
 }
 
+double CasingContact::min_residual_strength() const {
+  double weakest = 1.0;
+  for (int face = 0; face < 4; ++face) {
+    const std::size_t direction = face < 2 ? 0 : 1;
+    weakest = std::min(weakest, bearing_[direction].residual_strength(trial_.faces[face]));
+  }
+  for (std::size_t d = 0; d < walls_.size(); ++d) // none without CasingSplitting
+    weakest = std::min(weakest, walls_[d].residual_strength(trial_.walls[d]));
+  return weakest;
+}
+
 } // namespace brb::element

@@ -458,9 +458,10 @@ model::SolidMeshSpec read_solid(const JsonValue& object) {
   }
   if (const auto ends = object.find("end_faces")) {
     solid.end_faces =
-        one_of<model::SolidEndFaces>(*ends, "end faces' lateral support",
+        one_of<model::SolidEndFaces>(*ends, "end faces' support",
                                      {{"centre_lines", model::SolidEndFaces::centre_lines},
-                                      {"clamped", model::SolidEndFaces::clamped}});
+                                      {"clamped", model::SolidEndFaces::clamped},
+                                      {"pinned", model::SolidEndFaces::pinned}});
   }
   for (const auto& [key, value] : {std::pair{"steel_density", &solid.steel_density},
                                    std::pair{"mortar_density", &solid.mortar_density}}) {

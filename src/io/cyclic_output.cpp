@@ -66,6 +66,8 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
       Json{{"max_steel_damage", indicators.max_steel_damage},
            {"max_mortar_damage", indicators.max_mortar_damage},
            {"max_bearing_damage", indicators.max_bearing_damage},
+           {"min_bearing_residual_strength", indicators.min_bearing_residual_strength},
+           {"min_fill_residual_strength", indicators.min_fill_residual_strength},
            {"max_core_lateral_displacement", indicators.max_core_lateral_displacement},
            {"max_casing_lateral_displacement", indicators.max_casing_lateral_displacement},
            {"max_buckling_half_waves", indicators.max_buckling_half_waves},
@@ -82,8 +84,8 @@ NumericTable element_history_table(const analysis::CyclicTestResult& result) {
   NumericTable table({"step", "core_strain", "dissipated_energy",
                       "cumulative_inelastic_deformation", "max_core_lateral_displacement",
                       "max_casing_lateral_displacement", "max_buckling_half_waves",
-                      "max_steel_damage", "max_mortar_damage", "core_fracture", "casing_failure",
-                      "global_buckling"});
+                      "max_steel_damage", "max_mortar_damage", "min_bearing_residual_strength",
+                      "core_fracture", "casing_failure", "global_buckling"});
   for (const analysis::ElementHistoryPoint& point : result.history) {
     const analysis::BraceIndicators& indicators = point.indicators;
     table.append_row(std::array{
@@ -91,8 +93,9 @@ NumericTable element_history_table(const analysis::CyclicTestResult& result) {
         indicators.cumulative_inelastic_deformation, indicators.max_core_lateral_displacement,
         indicators.max_casing_lateral_displacement,
         static_cast<double>(indicators.max_buckling_half_waves), indicators.max_steel_damage,
-        indicators.max_mortar_damage, indicators.core_fracture ? 1.0 : 0.0,
-        indicators.casing_failure ? 1.0 : 0.0, indicators.global_buckling ? 1.0 : 0.0});
+        indicators.max_mortar_damage, indicators.min_bearing_residual_strength,
+        indicators.core_fracture ? 1.0 : 0.0, indicators.casing_failure ? 1.0 : 0.0,
+        indicators.global_buckling ? 1.0 : 0.0});
   }
   return table;
 }

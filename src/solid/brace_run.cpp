@@ -204,9 +204,17 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     loading.prescribed.add(node, 0, drive);
   for (int node : mesh.fixed_end)
     loading.prescribed.add(node, 0, 0.0);
-  for (const auto& face : {mesh.loaded_end, mesh.fixed_end})
+  for (const auto& face : {mesh.loaded_end, mesh.fixed_end}) {
     for (const auto& [node, direction] : lateral_supports(mesh.nodes, face, solid.end_faces))
       loading.prescribed.add(node, direction, 0.0);
+    // pinned: the face pivots about its centre (its x DOFs, prescribed above, plus a rotation)
+    if (solid.end_faces == model::SolidEndFaces::pinned && !face.empty()) {
+      PivotingFace pivot{face, Eigen::Matrix2Xd(2, static_cast<Eigen::Index>(face.size()))};
+      for (std::size_t i = 0; i < face.size(); ++i)
+        pivot.positions.col(static_cast<Eigen::Index>(i)) = mesh.nodes.col(face[i]).tail<2>();
+      loading.pivoting_faces.push_back(std::move(pivot));
+    }
+  }
   for (int node : mesh.symmetry_plane)
     loading.prescribed.add(node, 0, 0.0);
   loading.history = [protocol](double t) { return protocol.at(t); };
@@ -220,7 +228,10 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     r.point = point;
     r.steps = solver.steps();
     r.time = solver.time();
-    r.deformation = solver.displacement()[3 * mesh.loaded_end.front()] / drive;
+    // the driven face's translation (a pivoting face's nodes also carry its rotation)
+    r.deformation = loading.pivoting_faces.empty()
+                        ? solver.displacement()[3 * mesh.loaded_end.front()] / drive
+                        : loading.history(solver.time());
     for (int node : mesh.loaded_end)
       r.force += solver.internal_force()[3 * node];
     const SolidExplicitEnergy& e = solver.energy();

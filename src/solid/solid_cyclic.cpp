@@ -112,11 +112,22 @@ public:
       ind.core_fracture = true;
     if (const auto* mortar = mortar_part(state.body)) {
       const auto& states = mortar->model().states();
-      for (const auto& element : states)
-        ind.max_mortar_damage = std::max(ind.max_mortar_damage, element.damage);
-      for (int e : bearing_)
-        if (states[static_cast<std::size_t>(e)].damage >= analysis::kCrushedDamage)
-          ind.casing_failure = true;
+      const auto& laws = mortar->model().laws(); // one per element: its own lc
+      for (std::size_t e = 0; e < states.size(); ++e) {
+        ind.max_mortar_damage = std::max(ind.max_mortar_damage, states[e].damage);
+        ind.min_fill_residual_strength =
+            std::min(ind.min_fill_residual_strength, laws[e].residual_strength(states[e]));
+      }
+      for (int e : bearing_) {
+        const auto element = static_cast<std::size_t>(e);
+        ind.max_bearing_damage = std::max(ind.max_bearing_damage, states[element].damage);
+        ind.min_bearing_residual_strength = std::min(
+            ind.min_bearing_residual_strength, laws[element].residual_strength(states[element]));
+      }
+      // as the reduced model's rule (BraceIndicators): the mortar bounding the core cracked or
+      // crushed through
+      if (ind.min_bearing_residual_strength <= analysis::kCrushedResidualStrength)
+        ind.casing_failure = true;
     }
     if (has_previous_)
       ind.cumulative_inelastic_deformation += analysis::inelastic_deformation_increment(
@@ -211,6 +222,11 @@ SolidCyclicResult run_solid_cyclic(const model::BraceSpec& brace,
       hysteresis.append({step, point_cycle, r.deformation, r.force, lateral,
                          static_cast<int>(r.steps - previous_steps)},
                         cycle_ends, cycle_amplitude);
+      // The element history of brb cyclic --histories: the core strain as the brace's
+      // deformation over the yielding length (the 3D mesh has no yielding-zone chord; the end
+      // zones' elastic share is neglected), the dissipation as in the energy balance below.
+      cyclic.history.push_back({step, r.deformation / brace.yielding_length,
+                                r.internal + r.friction, tracker->indicators()});
     }
     previous_steps = r.steps;
     if (observer)

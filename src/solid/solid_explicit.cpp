@@ -6,6 +6,8 @@
 #include "brb/material/mortar_damage.hpp"
 #include "brb/material/steel_damage_plasticity_3d.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -50,9 +52,51 @@ SolidExplicitSolver<Model>::SolidExplicitSolver(Model& model, SolidLoading loadi
     if (!prescribed[dof])
       free_dofs_.push_back(dof);
   const Eigen::VectorXd lumped = model_.lumped_mass();
-  mass_.resize(static_cast<Eigen::Index>(free_dofs_.size()));
+  // Pivoting faces: the mass centre and the principal axes of the x masses' inertia about it
+  // in the face's (y, z) plane; J_k = e_k^T S e_k is the eigenvalue of S = sum m r r^T.
+  std::vector<double> inertias;
+  for (const PivotingFace& face : loading_.pivoting_faces) {
+    if (face.nodes.empty() || face.positions.cols() != static_cast<Eigen::Index>(face.nodes.size()))
+      throw std::invalid_argument(
+          "solid explicit: a pivoting face needs its nodes and one (y, z) position per node");
+    Pivot pivot;
+    double total = 0.0;
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (std::size_t i = 0; i < face.nodes.size(); ++i) {
+      const int dof = 3 * face.nodes[i];
+      if (dof < 0 || dof >= n || !prescribed[dof])
+        throw std::invalid_argument("solid explicit: node " + std::to_string(face.nodes[i]) +
+                                    " of a pivoting face needs its x DOF prescribed");
+      pivot.dofs.push_back(dof);
+      total += lumped[dof];
+      centre += lumped[dof] * face.positions.col(static_cast<Eigen::Index>(i));
+    }
+    if (!(total > 0.0))
+      throw std::invalid_argument("solid explicit: a pivoting face has no mass");
+    centre /= total;
+    Eigen::Matrix2d second_moment = Eigen::Matrix2d::Zero();
+    for (std::size_t i = 0; i < face.nodes.size(); ++i) {
+      const Eigen::Vector2d arm = face.positions.col(static_cast<Eigen::Index>(i)) - centre;
+      second_moment += lumped[pivot.dofs[i]] * arm * arm.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(second_moment);
+    for (int k = 0; k < 2; ++k) {
+      if (!(principal.eigenvalues()[k] > 1e-12 * second_moment.trace()))
+        throw std::invalid_argument(
+            "solid explicit: a pivoting face's nodes lie on a line: it cannot pivot about it");
+      const Eigen::Vector2d axis = principal.eigenvectors().col(k);
+      for (std::size_t i = 0; i < face.nodes.size(); ++i)
+        pivot.lever[static_cast<std::size_t>(k)].push_back(
+            axis.dot(face.positions.col(static_cast<Eigen::Index>(i)) - centre));
+      inertias.push_back(principal.eigenvalues()[k]);
+    }
+    pivots_.push_back(std::move(pivot));
+  }
+  mass_.resize(static_cast<Eigen::Index>(free_dofs_.size() + inertias.size()));
   for (std::size_t i = 0; i < free_dofs_.size(); ++i)
     mass_[i] = lumped[free_dofs_[i]];
+  for (std::size_t j = 0; j < inertias.size(); ++j)
+    mass_[static_cast<Eigen::Index>(free_dofs_.size() + j)] = inertias[j];
   stable_step_ = model_.stable_time_step(settings.stable_step_safety);
   time_step_ = settings.time_step > 0.0 ? settings.time_step : stable_step_;
   if (time_step_ > stable_step_ * (1.0 + 1e-12))
@@ -70,22 +114,54 @@ void SolidExplicitSolver<Model>::fill_prescribed(double t, Eigen::VectorXd& full
 }
 
 template <class Model>
+void SolidExplicitSolver<Model>::add_pivot_rotations(const Eigen::VectorXd& angles,
+                                                     Eigen::VectorXd& full) const {
+  for (std::size_t p = 0; p < pivots_.size(); ++p) {
+    const Pivot& pivot = pivots_[p];
+    const double first = angles[static_cast<Eigen::Index>(2 * p)];
+    const double second = angles[static_cast<Eigen::Index>(2 * p + 1)];
+    for (std::size_t i = 0; i < pivot.dofs.size(); ++i)
+      full[pivot.dofs[i]] += first * pivot.lever[0][i] + second * pivot.lever[1][i];
+  }
+}
+
+template <class Model>
+void SolidExplicitSolver<Model>::accelerations(const Eigen::VectorXd& force, double t,
+                                               Eigen::VectorXd& acceleration) const {
+  acceleration.resize(mass_.size());
+  const double load_factor = loading_.load_history(t);
+  const auto net = [&](int dof) {
+    const double external = loading_.load.size() ? load_factor * loading_.load[dof] : 0.0;
+    return external - force[dof];
+  };
+  for (std::size_t i = 0; i < free_dofs_.size(); ++i)
+    acceleration[static_cast<Eigen::Index>(i)] =
+        net(free_dofs_[i]) / mass_[static_cast<Eigen::Index>(i)];
+  // a pivot's angle: the moment of the net x forces about its axis over its inertia
+  for (std::size_t p = 0; p < pivots_.size(); ++p) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      double moment = 0.0;
+      for (std::size_t i = 0; i < pivots_[p].dofs.size(); ++i)
+        moment += net(pivots_[p].dofs[i]) * pivots_[p].lever[k][i];
+      const auto j = static_cast<Eigen::Index>(free_dofs_.size() + 2 * p + k);
+      acceleration[j] = moment / mass_[j];
+    }
+  }
+}
+
+template <class Model>
 void SolidExplicitSolver<Model>::set_initial_state(const Eigen::VectorXd& displacement,
                                                    const Eigen::VectorXd& velocity) {
   displacement_ = displacement;
   velocity_ = velocity;
+  pivot_angle_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(2 * pivots_.size()));
+  pivot_rate_ = pivot_angle_;
   fill_prescribed(time_, displacement_);
   std::string reason;
   if (!model_.evaluate(displacement_, force_, reason))
     throw std::invalid_argument("solid explicit: the initial state cannot be evaluated: " + reason);
   model_.commit();
-  acceleration_.resize(mass_.size());
-  const double load_factor = loading_.load_history(time_);
-  for (std::size_t i = 0; i < free_dofs_.size(); ++i) {
-    const int dof = free_dofs_[i];
-    const double external = loading_.load.size() ? load_factor * loading_.load[dof] : 0.0;
-    acceleration_[i] = (external - force_[dof]) / mass_[i];
-  }
+  accelerations(force_, time_, acceleration_);
   energy_ = {};
   for (std::size_t i = 0; i < free_dofs_.size(); ++i)
     energy_.kinetic += 0.5 * mass_[i] * velocity_[free_dofs_[i]] * velocity_[free_dofs_[i]];
@@ -95,20 +171,26 @@ void SolidExplicitSolver<Model>::set_initial_state(const Eigen::VectorXd& displa
 }
 
 template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::string& failure) {
+  // the state vector: the free DOFs, then the pivoting faces' angles
   const Eigen::Index m = mass_.size();
+  const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
+  const Eigen::Index angle_count = m - free_count;
   Eigen::VectorXd q(m), v(m);
-  for (Eigen::Index i = 0; i < m; ++i) {
+  for (Eigen::Index i = 0; i < free_count; ++i) {
     q[i] = displacement_[free_dofs_[i]];
     v[i] = velocity_[free_dofs_[i]];
   }
+  q.tail(angle_count) = pivot_angle_;
+  v.tail(angle_count) = pivot_rate_;
   Eigen::VectorXd full = displacement_;
   Eigen::VectorXd force;
   bool evaluated = true;
   const auto system = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& /*v*/,
                           Eigen::VectorXd& a, double t) {
-    for (Eigen::Index i = 0; i < m; ++i)
+    for (Eigen::Index i = 0; i < free_count; ++i)
       full[free_dofs_[i]] = x[i];
     fill_prescribed(t, full);
+    add_pivot_rotations(x.tail(angle_count), full);
     a.resize(m);
     if (!full.allFinite()) {
       evaluated = false;
@@ -121,12 +203,7 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
       a.setZero();
       return;
     }
-    const double load_factor = loading_.load_history(t);
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const int dof = free_dofs_[i];
-      const double external = loading_.load.size() ? load_factor * loading_.load[dof] : 0.0;
-      a[i] = (external - force[dof]) / mass_[i];
-    }
+    accelerations(force, t, a);
   };
   Stepper stepper;
   Eigen::VectorXd q_new(m), v_new(m), a_new(m);
@@ -142,6 +219,17 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
   double work = 0.0;
   for (int dof : loading_.prescribed.dofs)
     work += 0.5 * (force_[dof] + force[dof]) * increment[dof];
+  // a pivoting face's rotation is a free motion, not the drive's: take its part out of the
+  // reactions' work (the angles' kinetic energy and the elements' work account for it)
+  for (std::size_t p = 0; p < pivots_.size(); ++p) {
+    const double first = q_new[free_count + 2 * p] - q[free_count + 2 * p];
+    const double second = q_new[free_count + 2 * p + 1] - q[free_count + 2 * p + 1];
+    for (std::size_t i = 0; i < pivots_[p].dofs.size(); ++i) {
+      const int dof = pivots_[p].dofs[i];
+      work -= 0.5 * (force_[dof] + force[dof]) *
+              (first * pivots_[p].lever[0][i] + second * pivots_[p].lever[1][i]);
+    }
+  }
   if (loading_.load.size()) {
     const double before = loading_.load_history(time_), after = loading_.load_history(time_ + dt);
     for (int dof : free_dofs_)
@@ -152,8 +240,10 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
   take_model_energies();
   energy_.kinetic = 0.5 * v_new.dot(mass_.cwiseProduct(v_new));
   displacement_ = full;
-  for (Eigen::Index i = 0; i < m; ++i)
+  for (Eigen::Index i = 0; i < free_count; ++i)
     velocity_[free_dofs_[i]] = v_new[i];
+  pivot_angle_ = q_new.tail(angle_count);
+  pivot_rate_ = v_new.tail(angle_count);
   // velocities of the prescribed DOFs: the history's, by central difference over the step
   for (std::size_t i = 0; i < loading_.prescribed.dofs.size(); ++i)
     velocity_[loading_.prescribed.dofs[i]] = increment[loading_.prescribed.dofs[i]] / dt;

@@ -275,9 +275,11 @@ MetricValue evaluate_flag(const Json& metric, const RunData& run) {
   return {raised ? 1.0 : 0.0, flag};
 }
 
-constexpr std::array<std::string_view, 7> kIndicators{"max_steel_damage",
+constexpr std::array<std::string_view, 9> kIndicators{"max_steel_damage",
                                                       "max_mortar_damage",
                                                       "max_bearing_damage",
+                                                      "min_bearing_residual_strength",
+                                                      "min_fill_residual_strength",
                                                       "max_core_lateral_displacement",
                                                       "max_casing_lateral_displacement",
                                                       "max_buckling_half_waves",
@@ -288,7 +290,8 @@ void check_max_indicator(const io::JsonValue& metric) {
          kIndicators);
 }
 
-/// A largest-over-the-run indicator of summary.json's element block.
+/// A running-extreme indicator of summary.json's element block: the largest over the run, or
+/// for the residual strengths the smallest.
 MetricValue evaluate_max_indicator(const Json& metric, const RunData& run) {
   const std::string name = metric.at("indicator").get<std::string>();
   const analysis::BraceIndicators& indicators = run.result.indicators;
@@ -299,6 +302,10 @@ MetricValue evaluate_max_indicator(const Json& metric, const RunData& run) {
     value = indicators.max_mortar_damage;
   else if (name == "max_bearing_damage")
     value = indicators.max_bearing_damage;
+  else if (name == "min_bearing_residual_strength")
+    value = indicators.min_bearing_residual_strength;
+  else if (name == "min_fill_residual_strength")
+    value = indicators.min_fill_residual_strength;
   else if (name == "max_core_lateral_displacement")
     value = indicators.max_core_lateral_displacement;
   else if (name == "max_casing_lateral_displacement")
@@ -633,7 +640,8 @@ const std::array<MetricKind, 17>& registry() {
        check_flag,
        evaluate_flag},
       {"max_indicator",
-       "a largest-over-the-run indicator of summary.json's element block (\"indicator\")",
+       "a running-extreme indicator of summary.json's element block (\"indicator\": the "
+       "largest over the run, the smallest for a residual strength)",
        {"indicator"},
        false,
        check_max_indicator,

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -172,8 +173,10 @@ TEST(CasingFailureFlag, FillCrackedInASteelTubeIsNoCasingFailure) {
   // max_mortar_damage shows, is not (the tube still holds the core).
   const BraceIndicators indicators =
       indicators_with_the_casing_stretched(test::girona_d3_restrained(8));
-  EXPECT_GE(indicators.max_mortar_damage, kCrushedDamage);
+  EXPECT_GE(indicators.max_mortar_damage, 0.9);
+  EXPECT_LE(indicators.min_fill_residual_strength, kCrushedResidualStrength);
   EXPECT_EQ(indicators.max_bearing_damage, 0.0);
+  EXPECT_EQ(indicators.min_bearing_residual_strength, 1.0);
   EXPECT_FALSE(indicators.casing_failure);
 }
 
@@ -184,31 +187,66 @@ TEST(CasingFailureFlag, AMortarOnlyCasingCrackedThroughIsACasingFailure) {
   spec.casing->steel_tube = false;
   spec.casing->tube.wall = 0.0;
   const BraceIndicators indicators = indicators_with_the_casing_stretched(spec);
-  EXPECT_GE(indicators.max_mortar_damage, kCrushedDamage);
-  EXPECT_EQ(indicators.max_bearing_damage, 0.0);
+  EXPECT_LE(indicators.min_fill_residual_strength, kCrushedResidualStrength);
+  EXPECT_EQ(indicators.min_bearing_residual_strength, 1.0);
   EXPECT_TRUE(indicators.casing_failure);
 }
 
-TEST(CasingFailureFlag, MortarCrushedUnderAStationIsACasingFailure) {
-  // The core pushed sideways into the mortar at a station by the gap plus half the mortar's
-  // thickness (bearing strain 0.5, hundreds of times fc / E): the bearing face is crushed.
+/// The indicators after the core of the Girona D3 brace is pushed sideways (z) into the
+/// mortar at its middle station by push(link parameters) (mm), no other node moving.
+BraceIndicators indicators_with_the_core_pushed_into_a_station(
+    const std::function<double(const element::CasingContactParameters&)>& push) {
   model::BraceModel brace = model::build_brace_model(test::girona_d3_restrained(8));
   const model::CasingModel& casing = *brace.casing;
   const std::size_t station = casing.contacts.size() / 2;
-  auto& link = *casing.contacts[station];
   const int core_node = casing.core_nodes[station];
-  const double gap = casing.interior_link.gap_z;
-  const double push = gap + 0.5 * casing.interior_link.bearing_depth_z;
-  strain_element(link, brace.model, [&](int node) {
-    return node == core_node ? element::Vector3(push * brace.axes.col(2))
+  const double lateral = push(casing.interior_link);
+  strain_element(*casing.contacts[station], brace.model, [&](int node) {
+    return node == core_node ? element::Vector3(lateral * brace.axes.col(2))
                              : element::Vector3::Zero();
   });
   BraceIndicatorTracker tracker(brace, brace.model);
   tracker.observe(
       [&](int node) -> const element::Vector3& { return brace.model.coordinates(node); }, 0.0, 0.0);
-  EXPECT_GE(tracker.indicators().max_bearing_damage, kCrushedDamage);
-  EXPECT_EQ(tracker.indicators().max_mortar_damage, tracker.indicators().max_bearing_damage);
-  EXPECT_TRUE(tracker.indicators().casing_failure);
+  return tracker.indicators();
+}
+
+TEST(CasingFailureFlag, MortarCrushedUnderAStationIsACasingFailure) {
+  // The core pushed sideways into the mortar at a station by the gap plus half the mortar's
+  // thickness (bearing strain 0.5, hundreds of times fc / E): the bearing face is crushed.
+  const BraceIndicators indicators = indicators_with_the_core_pushed_into_a_station(
+      [](const element::CasingContactParameters& link) {
+        return link.gap_z + 0.5 * link.bearing_depth_z;
+      });
+  EXPECT_LE(indicators.min_bearing_residual_strength, kCrushedResidualStrength);
+  EXPECT_GE(indicators.max_bearing_damage, 0.9);
+  EXPECT_EQ(indicators.max_mortar_damage, indicators.max_bearing_damage);
+  EXPECT_TRUE(indicators.casing_failure);
+}
+
+TEST(CasingFailureFlag, MortarJustPastItsPeakUnderAStationIsNoCasingFailure) {
+  // The core pushed into the mortar at a station to a bearing strain where the face keeps 0.2
+  // of fc: residual strength exp(A (1 - r / r0)) = 0.2 (ExponentialSoftening), so
+  // r / r0 = 1 - ln(0.2) / A. Its damage 1 - 0.2 r0 / r is already past 0.9 (the old rule's
+  // threshold: a face that damaged would have flagged), but the face is still bearing a fifth
+  // of its strength, and the flag's rule (residual strength <= 0.1) leaves it unflagged.
+  const double target = 0.2;
+  double old_rule_damage = 0.0;
+  const BraceIndicators indicators = indicators_with_the_core_pushed_into_a_station(
+      [&](const element::CasingContactParameters& link) {
+        const material::MortarUniaxial face_law(link.mortar, link.bearing_depth_z);
+        const double threshold_ratio =
+            1.0 - std::log(target) / face_law.softening().softening_parameter();
+        old_rule_damage = 1.0 - target / threshold_ratio;
+        // uniaxial compression: r / r0 = |strain| / (fc / E)
+        const double bearing_strain =
+            threshold_ratio * link.mortar.compressive_strength / link.mortar.youngs_modulus;
+        return link.gap_z + bearing_strain * link.bearing_depth_z;
+      });
+  ASSERT_GT(old_rule_damage, 0.9) << "the case the old rule flagged";
+  EXPECT_NEAR(indicators.min_bearing_residual_strength, target, 0.02);
+  EXPECT_GT(indicators.max_bearing_damage, 0.9);
+  EXPECT_FALSE(indicators.casing_failure);
 }
 
 } // namespace

@@ -341,13 +341,14 @@ TEST(CyclicCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
   EXPECT_EQ(lines.front(),
             "step,core_strain,dissipated_energy,cumulative_inelastic_deformation,"
             "max_core_lateral_displacement,max_casing_lateral_displacement,"
-            "max_buckling_half_waves,max_steel_damage,max_mortar_damage,core_fracture,"
-            "casing_failure,global_buckling");
+            "max_buckling_half_waves,max_steel_damage,max_mortar_damage,"
+            "min_bearing_residual_strength,core_fracture,casing_failure,global_buckling");
   const json summary = json::parse(read_file(output / "summary.json"));
-  std::vector<double> previous(12, 0.0);
+  std::vector<double> previous(13, 0.0);
+  previous[9] = 1.0; // the residual strength starts intact
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const std::vector<double> values = numbers_of(lines[k]);
-    ASSERT_EQ(values.size(), 12u) << lines[k];
+    ASSERT_EQ(values.size(), 13u) << lines[k];
     EXPECT_EQ(values[0], rows[k - 1].step);
     // Reference (theory): the straight core without end zones is the whole brace, so its
     // mean strain is the deformation over its length.
@@ -357,12 +358,16 @@ TEST(CyclicCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
       EXPECT_GE(values[column], previous[column] - 1e-9 * std::abs(previous[column]))
           << "column " << column << ", row " << k;
     }
+    // the running minimum of the residual strength never increases, and stays in (0, 1]
+    EXPECT_LE(values[9], previous[9]) << "row " << k;
+    EXPECT_GT(values[9], 0.0) << "row " << k;
     previous = values;
   }
   // The last row holds what summary.json reports for the whole test.
   const json& element = summary.at("element");
   EXPECT_NEAR(previous[3], element.at("cumulative_inelastic_deformation").get<double>(), 1e-9);
   EXPECT_NEAR(previous[4], element.at("max_core_lateral_displacement").get<double>(), 1e-9);
+  EXPECT_NEAR(previous[9], element.at("min_bearing_residual_strength").get<double>(), 1e-9);
   EXPECT_NEAR(previous[2],
               summary.at("energy_balance").at("dissipated").get<double>() +
                   summary.at("energy_balance").at("released_by_laws").get<double>(),

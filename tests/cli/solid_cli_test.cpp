@@ -180,6 +180,36 @@ TEST(SolidCli, WritesTheChosenSnapshotsAndTheirCollection) {
   EXPECT_NE(pvd.find("fields/step_000004.vtu"), std::string::npos) << pvd;
 }
 
+TEST(SolidCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
+  const SolidFiles files(bar_brace());
+  const CliRun run = run_brb(files.arguments("--histories"));
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("element_history.csv"), std::string::npos) << run.out;
+  const auto hysteresis = lines_of(read_file(files.out / "hysteresis.csv"));
+  const auto history = lines_of(read_file(files.out / "element_history.csv"));
+  // the columns of brb cyclic --histories, one row per step after the initial 0
+  EXPECT_EQ(history.front(),
+            "step,core_strain,dissipated_energy,cumulative_inelastic_deformation,"
+            "max_core_lateral_displacement,max_casing_lateral_displacement,"
+            "max_buckling_half_waves,max_steel_damage,max_mortar_damage,"
+            "min_bearing_residual_strength,core_fracture,casing_failure,global_buckling");
+  ASSERT_EQ(history.size(), hysteresis.size() - 1);
+  for (std::size_t k = 1; k < history.size(); ++k) {
+    const auto row = numbers_of(history[k]);
+    const auto point = numbers_of(hysteresis[k + 1]);
+    ASSERT_EQ(row.size(), 13u) << history[k];
+    EXPECT_EQ(row[0], point[0]);
+    // the bar has no end zones: its strain is the deformation over its length
+    EXPECT_NEAR(row[1], point[2] / kCoreLength, 1e-12) << history[k];
+    EXPECT_EQ(row[9], 1.0) << "no casing: no mortar has softened";
+  }
+  // the last row holds what summary.json reports for the whole run
+  const json summary = json::parse(read_file(files.out / "summary.json"));
+  const auto last = numbers_of(history.back());
+  EXPECT_NEAR(last[3], summary["element"]["cumulative_inelastic_deformation"].get<double>(), 1e-9);
+  EXPECT_GT(last[3], 0.0) << "the bar yielded";
+}
+
 TEST(SolidCli, TheShortestExcursionTimeIsKeptInTheSummaryAndExcludesADuration) {
   const SolidFiles files(bar_brace());
   const CliRun run = run_brb(files.arguments("--min-excursion-time 0.5"));

@@ -146,6 +146,58 @@ SofteningRun soften_completely(double softening_parameter, int steps, Evaluate e
   return run;
 }
 
+// ---------------------------------------------------------------------------------------
+// Residual strength (the casing-failure flag's measure, BraceIndicators): on the loading
+// branch (1 - d) r / r0 = exp(A (1 - r / r0)) is the stress over the onset stress.
+
+TEST(MortarResidualStrength, IsTheStressOverTheOnsetStressOnTheLoadingBranch) {
+  const MortarUniaxial law(kMortar, kCharacteristicLength);
+  for (const double multiple : {0.5, 1.0, 2.0, 10.0, 100.0, 1000.0}) {
+    const auto tension = law.evaluate(law.initial_state(), multiple * kTensileStrain);
+    const auto compression = law.evaluate(law.initial_state(), -multiple * kCompressiveStrain);
+    if (multiple < 1.0) { // before the peak
+      EXPECT_EQ(law.residual_strength(tension.state), 1.0);
+      EXPECT_EQ(law.residual_strength(compression.state), 1.0);
+      continue;
+    }
+    EXPECT_NEAR(law.residual_strength(tension.state), tension.stress / kMortar.tensile_strength,
+                1e-12)
+        << multiple;
+    EXPECT_NEAR(law.residual_strength(compression.state),
+                -compression.stress / kMortar.compressive_strength, 1e-12)
+        << multiple;
+  }
+  EXPECT_EQ(law.residual_strength(law.initial_state()), 1.0);
+}
+
+TEST(MortarResidualStrength, FollowsTheCrackOpeningWhateverTheElementSizeWhileDamageDoesNot) {
+  // Reference (theory of the Gf regularisation, Oliver et al. 1990; exponential_softening.hpp):
+  // at a crack opening w = lc (eps - sigma / E) the softening branch is sigma / ft close to
+  // exp(-ft w / Gf) for any lc well below 2 Gf E / ft^2, so a 6.8 mm element (a 3D mortar
+  // element of brb solid's small BRB) and a 30 mm one (the reduced model's split walls) keep
+  // the same residual strength, while their damage differs (0.93 against 0.77 here).
+  const double opening = 0.02; // mm
+  const double expected = std::exp(-kMortar.tensile_strength * opening / kMortar.fracture_energy);
+  std::vector<double> residual, damage;
+  for (const double length : {6.8, 30.0}) {
+    const MortarUniaxial law(kMortar, length, LongElementRule::reject);
+    // bisection on eps in [w / lc, w / lc + ft / E], where lc (eps - sigma / E) = w lies
+    double low = opening / length, high = opening / length + kTensileStrain;
+    for (int k = 0; k < 200; ++k) {
+      const double strain = 0.5 * (low + high);
+      const auto response = law.evaluate(law.initial_state(), strain);
+      const double crack = length * (strain - response.stress / kMortar.youngs_modulus);
+      (crack < opening ? low : high) = strain;
+    }
+    const auto response = law.evaluate(law.initial_state(), 0.5 * (low + high));
+    residual.push_back(law.residual_strength(response.state));
+    damage.push_back(response.state.damage);
+    EXPECT_NEAR(residual.back(), expected, 0.01) << "lc " << length;
+  }
+  EXPECT_NEAR(residual[0], residual[1], 0.01);
+  EXPECT_GT(damage[0] - damage[1], 0.1);
+}
+
 class MortarFractureEnergy : public ::testing::TestWithParam<double> {};
 
 TEST_P(MortarFractureEnergy, UniaxialLawDissipatesGfOverLc) {

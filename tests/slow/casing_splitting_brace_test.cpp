@@ -13,6 +13,7 @@
 #include "support/monotonic_shortening.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +55,12 @@ SplitRun shorten(bool splitting, double target) {
   return run;
 }
 
+/// The committed 3D run's element block (summary.json): its indicators at the end of the run.
+nlohmann::json solid_indicators() {
+  std::ifstream file(kSpecimen + "/solid/x1/summary.json");
+  return nlohmann::json::parse(file).at("element");
+}
+
 /// The 3D run's (committed reference) largest shortening and its force there.
 std::pair<double, double> solid_compression_peak() {
   std::ifstream file(kSpecimen + "/solid/x1/hysteresis.csv");
@@ -86,6 +93,7 @@ TEST(CasingSplittingBrace,
             << split.result.steps.back().force << " N, rigid " << rigid.result.steps.back().force
             << " N; face pressure " << split.largest_face_pressure << " / "
             << rigid.largest_face_pressure << " MPa; wall damage " << split.largest_wall_damage
+            << ", residual strength " << split.result.indicators.min_bearing_residual_strength
             << "\n";
   ASSERT_TRUE(split.result.completed) << split.result.stop_reason;
   ASSERT_TRUE(rigid.result.completed) << rigid.result.stop_reason;
@@ -95,10 +103,17 @@ TEST(CasingSplittingBrace,
   const double rigid_error = rigid.result.steps.back().force / solid_force - 1.0;
   EXPECT_LT(std::abs(split_error), 0.05);
   EXPECT_GT(rigid_error, 0.10);
-  // the walls crack through (casing failure, as the 3D model's mortar) while the faces' bearing
-  // stays far below f_c = 39.92 MPa; the rigid casing presses them to it
-  EXPECT_TRUE(split.result.indicators.casing_failure);
+  // The walls crack, as the 3D model's mortar, while the faces' bearing stays far below
+  // f_c = 39.92 MPa; the rigid casing presses them to it. Both models' cracked mortar keeps
+  // about half its strength at -15 dy: the residual strength (the casing-failure measure, an
+  // objective one) of the split walls against the 3D run's bearing elements, measured 0.63 and
+  // 0.53 (damage 0.95 and 0.99: d depends on the element size); neither has failed (<= 0.1).
+  const nlohmann::json solid = solid_indicators();
+  const double split_residual = split.result.indicators.min_bearing_residual_strength;
   EXPECT_GT(split.largest_wall_damage, 0.9);
+  EXPECT_LT(split_residual, 0.9) << "the walls are past their peak";
+  EXPECT_NEAR(split_residual, solid.at("min_bearing_residual_strength").get<double>(), 0.15);
+  EXPECT_EQ(split.result.indicators.casing_failure, solid.at("casing_failure").get<bool>());
   EXPECT_LT(split.largest_face_pressure, 0.5 * 39.92);
   EXPECT_EQ(rigid.largest_wall_damage, 0.0);
   EXPECT_GT(rigid.largest_face_pressure, 0.9 * 39.92); // measured 39.76 MPa

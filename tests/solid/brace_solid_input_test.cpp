@@ -76,6 +76,8 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
   EXPECT_EQ(defaults.solid->tube, model::SolidTube::elements);
   EXPECT_EQ(defaults.solid->end_faces, model::SolidEndFaces::centre_lines);
   EXPECT_FALSE(parse_brace(cased_brace(json::object()).dump(), "b").solid->half_length);
+  EXPECT_EQ(parse_brace(cased_brace({{"end_faces", "pinned"}}).dump(), "b").solid->end_faces,
+            model::SolidEndFaces::pinned);
 }
 
 TEST(BraceSolidInput, ReportsEachBadMeshInput) {
@@ -96,6 +98,7 @@ TEST(BraceSolidInput, ReportsEachBadMeshInput) {
   EXPECT_EQ(error_location(cased_brace({{"half_length", 1}})), "/solid/half_length");
   EXPECT_EQ(error_location(cased_brace({{"end_faces", "grips"}}), &message), "/solid/end_faces");
   EXPECT_NE(message.find("centre_lines"), std::string::npos) << message;
+  EXPECT_NE(message.find("pinned"), std::string::npos) << message;
   EXPECT_EQ(error_location(cased_brace({{"mass_scaling", 0.5}})), "/solid/mass_scaling");
   EXPECT_EQ(error_location(cased_brace({{"elements", 3}})), "/solid/elements");
 

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
 
 namespace brb::solid {
 namespace {
@@ -149,6 +152,86 @@ TEST(SolidExplicit, RefusesAnUnstableStep) {
 
 namespace brb::solid {
 namespace {
+
+/// A beam 200 x 20 (y) x 10 (z) mm, 20 x 2 x 4 elements, on pivoting end faces (PivotingFace:
+/// u_x of a face = its rotation only, the x translations prescribed to 0) held sideways at
+/// the node at each face's centre: simply supported for bending in z.
+struct PinnedBeam {
+  StructuredPrismMesh prism{Eigen::Vector3d(kLength, 20.0, 10.0), {20, 2, 4}};
+  ElasticModel model{prism.mesh(), [](double) { return material::IsotropicElastic3D(kE, kNu); },
+                     kDensity};
+  SolidLoading loading() const {
+    SolidLoading loading;
+    for (const PrismFace side : {PrismFace::x_min, PrismFace::x_max}) {
+      const std::vector<int> face = prism.face_nodes(side);
+      PivotingFace pivot{face, Eigen::Matrix2Xd(2, static_cast<Eigen::Index>(face.size()))};
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        loading.prescribed.add(face[i], 0, 0.0);
+        pivot.positions.col(static_cast<Eigen::Index>(i)) =
+            prism.mesh().nodes.col(face[i]).tail<2>();
+      }
+      loading.pivoting_faces.push_back(pivot);
+      const int centre = prism.node_index(side == PrismFace::x_min ? 0 : 20, 1, 2);
+      loading.prescribed.add(centre, 1, 0.0);
+      loading.prescribed.add(centre, 2, 0.0);
+    }
+    return loading;
+  }
+};
+
+TEST(SolidExplicit, PivotingFacesTurnAsASimplySupportedBeamsEndsAndKeepTheEnergy) {
+  // Free vibration from a lateral velocity v0 sin(pi x / L) in z (the first mode of a simply
+  // supported beam). Reference (theory): in that mode the end slopes are +-pi a / L for a
+  // mid-span deflection a, equal and opposite at the two ends; with no load and no damping
+  // the energy stays what it was at the start (central differences: O(dt^2)).
+  PinnedBeam beam;
+  const SolidLoading loading = beam.loading();
+  SolidExplicit<material::IsotropicElastic3D> solver(beam.model, loading);
+  const Eigen::Matrix3Xd& nodes = beam.prism.mesh().nodes;
+  Eigen::VectorXd velocity = Eigen::VectorXd::Zero(beam.model.dof_count());
+  const double v0 = 100.0; // mm/s
+  for (int n = 0; n < nodes.cols(); ++n)
+    velocity[3 * n + 2] = v0 * std::sin(std::numbers::pi * nodes(0, n) / kLength);
+  for (int dof : loading.prescribed.dofs)
+    velocity[dof] = 0.0;
+  solver.set_initial_state(Eigen::VectorXd::Zero(beam.model.dof_count()), velocity);
+  // a quarter of the first bending period: the beam is near its largest deflection
+  const double inertia = 20.0 * 1000.0 / 12.0, area = 200.0;
+  const double omega =
+      std::pow(std::numbers::pi / kLength, 2) * std::sqrt(kE * inertia / (kDensity * area));
+  std::string failure;
+  ASSERT_TRUE(solver.run_to(0.25 * 2.0 * std::numbers::pi / omega, failure)) << failure;
+  // mid-span deflection: the mean u_z of the nodes at x = L / 2
+  double deflection = 0.0;
+  int count = 0;
+  for (int n = 0; n < nodes.cols(); ++n) {
+    if (std::abs(nodes(0, n) - 0.5 * kLength) < 1e-9) {
+      deflection += solver.displacement()[3 * n + 2];
+      ++count;
+    }
+  }
+  deflection /= count;
+  // the angle about the y axis: the principal axis with the z lever arms (the smaller
+  // inertia of the 20 x 10 face comes first), one per face
+  const Eigen::VectorXd& angles = solver.pivot_angles();
+  ASSERT_EQ(angles.size(), 4);
+  const double start = angles[0], end = angles[2];
+  const double slope = std::numbers::pi * deflection / kLength;
+  RecordProperty("end_angle_over_theory", std::to_string(std::abs(start) / slope));
+  EXPECT_GT(deflection, 0.0);
+  EXPECT_NEAR(std::abs(start) / slope, 1.0, 0.1);
+  EXPECT_NEAR(start, -end, 1e-6 * std::abs(start));
+  EXPECT_LT(std::abs(angles[1]) + std::abs(angles[3]), 1e-6 * std::abs(start)) << "no twist";
+  EXPECT_LT(solver.energy().relative_error(), 1e-3);
+}
+
+TEST(SolidExplicit, APivotingFaceNeedsItsXDofsPrescribed) {
+  PinnedBeam beam;
+  SolidLoading loading = beam.loading();
+  loading.prescribed = PrescribedDisplacements{}; // the faces' x DOFs no longer prescribed
+  EXPECT_THROW(SolidExplicit<material::IsotropicElastic3D>(beam.model, loading),
+               std::invalid_argument);
+}
 
 TEST(SolidExplicit, ResultsDoNotDependOnTheThreadCount) {
   // The element loop writes per-element slots and sums them in element order: the run must

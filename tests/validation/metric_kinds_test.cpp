@@ -291,6 +291,16 @@ TEST(FlagAndIndicator, ReadTheBraceIndicators) {
   result.indicators.max_mortar_damage = 0.25;
   result.indicators.max_bearing_damage = 0.125;
   result.indicators.max_buckling_half_waves = 7;
+  result.indicators.min_bearing_residual_strength = 0.375;
+  result.indicators.min_fill_residual_strength = 0.0625;
+  EXPECT_EQ(
+      *evaluate({{"kind", "max_indicator"}, {"indicator", "min_bearing_residual_strength"}}, result)
+           .value,
+      0.375);
+  EXPECT_EQ(
+      *evaluate({{"kind", "max_indicator"}, {"indicator", "min_fill_residual_strength"}}, result)
+           .value,
+      0.0625);
   EXPECT_EQ(*evaluate({{"kind", "flag"}, {"flag", "casing_failure"}}, result).value, 1.0);
   EXPECT_EQ(*evaluate({{"kind", "flag"}, {"flag", "global_buckling"}}, result).value, 0.0);
   EXPECT_EQ(

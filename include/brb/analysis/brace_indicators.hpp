@@ -12,7 +12,12 @@ namespace brb::analysis {
 
 /// Flags follow stated rules (constants in brace_indicators.cpp):
 ///  - core fracture: some core fiber's damage reached 0.9;
-///  - casing failure: the mortar under some station crushed through (bearing damage >= 0.9);
+///  - casing failure: the mortar under some station crushed (or, with casing/splitting, split)
+///    through: its residual strength fell to 0.1 of its onset stress (in a mortar-only casing
+///    also a fill fiber's). The residual strength exp(A (1 - r / r0)), not the damage d, since
+///    only it is objective: the same crack opening gives a larger d in a shorter element (see
+///    ExponentialSoftening::residual_strength). Residual 0.1 means d > 0.9 at any size, and
+///    about 90 % of the fracture energy spent;
 ///  - global buckling: the casing (or, without casing, the core) bowed laterally by more than
 ///    L_y / 250 (its offset from the current chord of the brace's outer nodes, less the
 ///    clearance (gap) per direction for a casing, which may shift sideways by that much
@@ -30,6 +35,13 @@ struct BraceIndicators {
   /// (strain ft / E, about 1.3e-4), which in a steel tube is not a casing failure (in a mortar-only
   /// casing it is: the flag's rule).
   double max_bearing_damage = 0.0;
+  /// Smallest residual strength of the mortar under a station, as a fraction of its onset
+  /// stress (f_c for a bearing face, f_t for split walls): casing_failure when it falls to
+  /// kCrushedResidualStrength. 1 while the mortar there has not passed its peak.
+  double min_bearing_residual_strength = 1.0;
+  /// Smallest residual strength of the casing's mortar fill fibers (1 without casing): the
+  /// casing_failure rule of a mortar-only casing.
+  double min_fill_residual_strength = 1.0;
   double max_core_lateral_displacement = 0.0;   ///< mm, core nodes from their initial place
   double max_casing_lateral_displacement = 0.0; ///< mm (0 without casing)
   /// Largest number of half-waves of the yielding core's lateral displacement (relative to
@@ -49,9 +61,9 @@ struct BraceIndicators {
 
 /// Steel damage at which a core fiber counts as fractured (the core-fracture flag).
 inline constexpr double kFractureDamage = 0.9;
-/// Bearing damage at which the mortar under a station counts as crushed through (the
-/// casing-failure flag).
-inline constexpr double kCrushedDamage = 0.9;
+/// Residual strength (fraction of the onset stress) at or below which the mortar under a
+/// station counts as crushed or split through (the casing-failure flag).
+inline constexpr double kCrushedResidualStrength = 0.1;
 /// A lateral deflection beyond L_y / this (less the clearance) can flag global buckling.
 inline constexpr double kGlobalBucklingRatio = 250.0;
 

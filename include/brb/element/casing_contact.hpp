@@ -198,6 +198,9 @@ public:
 
   /// Largest mortar damage over the four faces and the split walls (trial state).
   double max_mortar_damage() const;
+  /// Smallest residual strength over the four faces (a fraction of f_c) and the split walls
+  /// (of f_t): MortarUniaxial::residual_strength, trial state; 1 while all are intact.
+  double min_residual_strength() const;
   /// The casing's split opening w per direction, y and z (mm, >= 0; trial state; 0 without
   /// CasingSplitting).
   const std::array<double, 2>& split_opening() const { return trial_.opening; }

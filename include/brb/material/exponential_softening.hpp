@@ -47,6 +47,18 @@ public:
     return std::exp(softening_parameter_ * (1.0 - ratio)) / ratio;
   }
 
+  /// Residual strength (1 - G(r)) r / r0 = exp(A (1 - r / r0)) as a fraction of the onset
+  /// stress: 1 up to the peak (r <= r0, or r = 0 for a state never loaded), then falling. On the
+  /// loading branch the stress is (1 - d) E eps with r = sqrt(E) eps, so this is sigma / f.
+  /// Unlike d it is objective: with A ~ lc f^2 / (Gf E) for lc well below the longest, the
+  /// softening branch is sigma / f = exp(-f w / Gf) in the crack opening w = (eps - eps0) lc,
+  /// whatever the element size, while d at the same w grows with 1 / lc.
+  double residual_strength(double threshold) const {
+    if (threshold <= initial_threshold_)
+      return 1.0;
+    return std::exp(softening_parameter_ * (1.0 - threshold / initial_threshold_));
+  }
+
   /// G(r) for r >= r0 (0 at r0, tends to 1).
   double damage(double threshold) const { return 1.0 - integrity(threshold); }
 

@@ -47,6 +47,11 @@ public:
   Response evaluate(const State& committed, const Vector6& strain) const;
   double free_energy(const State& state, const Vector6& strain) const;
   double stress_scale() const { return parameters_.tensile_strength; }
+  /// The state's residual strength as a fraction of its onset stress (f_t in tension, f_c in
+  /// compression): ExponentialSoftening::residual_strength of its threshold.
+  double residual_strength(const State& state) const {
+    return softening_.residual_strength(state.damage_threshold);
+  }
   const MortarParameters& parameters() const { return parameters_; }
   const ExponentialSoftening& softening() const { return softening_; }
 
@@ -75,6 +80,11 @@ public:
   /// Energy dissipated so far per unit volume (MPa).
   static double dissipated_energy(const State& state) { return state.dissipated_energy; }
   double stress_scale() const { return parameters_.tensile_strength; }
+  /// The state's residual strength as a fraction of its onset stress (f_t in tension, f_c in
+  /// compression): ExponentialSoftening::residual_strength of its threshold.
+  double residual_strength(const State& state) const {
+    return softening_.residual_strength(state.damage_threshold);
+  }
   const MortarParameters& parameters() const { return parameters_; }
   const ExponentialSoftening& softening() const { return softening_; }
 

@@ -147,7 +147,11 @@ enum class SolidTube { elements, homogenised };
 /// neither moves sideways nor twists but its section contracts and expands freely (the
 /// uniaxial stress of the fiber model up to the end); clamped: every node's u_y and u_z (the
 /// grips of a test machine, which restrain the Poisson strain there and stiffen a stubby core).
-enum class SolidEndFaces { centre_lines, clamped };
+/// In both the whole face is held (driven) along x, so it cannot rotate: the 3D core's ends
+/// are fixed in bending. pinned: held sideways as centre_lines, and the face stays plane but
+/// rotates freely about y and z through its centre (a rigid end plate on a spherical pin,
+/// solid_explicit.hpp's PivotingFace): the reduced model's "ends": "pinned".
+enum class SolidEndFaces { centre_lines, clamped, pinned };
 
 /// The `solid` block of a brace file: the 3D continuum mesh of the brace (issue 6;
 /// solid/brace_mesh.hpp states the geometry). Defaults as listed.

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <concepts>
 #include <vector>
 
 namespace brb::section {
@@ -125,6 +126,19 @@ public:
     for (const auto& state : trial_)
       worst = std::max(worst, state.damage);
     return worst;
+  }
+
+  /// Smallest fiber residual strength (a fraction of the onset stress, 1 if the section has
+  /// no fibers) in the trial state, for laws that define it (MortarUniaxial::residual_strength).
+  double min_residual_strength() const requires
+      requires(const UniaxialLaw& law, const FiberState& state) {
+    { law.residual_strength(state) } -> std::convertible_to<double>;
+  }
+  {
+    double weakest = 1.0;
+    for (const auto& state : trial_)
+      weakest = std::min(weakest, law_.residual_strength(state));
+    return weakest;
   }
 
 private:

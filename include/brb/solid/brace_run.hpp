@@ -15,7 +15,11 @@
 //   twist, the section's Poisson strain free, as in the fiber model's uniaxial stress), or
 //   clamped (u_y = u_z = 0 on every node: the grips of a test machine, which stiffen a stubby
 //   core: the small BRB of the source, 100 mm long and 10 mm wide, by 13 % at 15 d_y with two
-//   elements across). The casing is held only by the stopper tie and the contact. Half length
+//   elements across). Held along x over their whole area, those faces cannot rotate: the
+//   core's ends are fixed in bending. `end_faces` "pinned": sideways as the centre lines, and
+//   each face stays plane but pivots about its centre (PivotingFace of solid_explicit.hpp; the
+//   driven face's translation is d(t)): the reduced model's pinned ends. The casing is held
+//   only by the stopper tie and the contact. Half length
 //   (the source's half model, BRB_SOURCE_FACTS section 7): u_x = 0 on the symmetry plane
 //   (core, mortar, tube at mid-length), the driven face follows u_x = d(t) / 2; the brace
 //   elongation reported is twice the driven face's displacement.

@@ -15,16 +15,22 @@
 //
 // Indicators (analysis::BraceIndicators, the reduced model's names; rules stated here):
 // - max_steel_damage, core_fracture (damage >= kFractureDamage): over the core's elements;
-// - max_mortar_damage: over the mortar's elements; casing_failure: a mortar element that bounds
-//   the opening (one of its faces is a contact face of the casing) reached damage 0.9, the
-//   reduced model's rule (bearing damage under a station >= 0.9) taken to the elements that
-//   bear on the core;
+// - max_mortar_damage, min_fill_residual_strength: over the mortar's elements;
+//   max_bearing_damage, min_bearing_residual_strength: over the mortar elements that bound the
+//   opening (one of its faces is a contact face of the casing); casing_failure: the residual
+//   strength of one of those fell to kCrushedResidualStrength (0.1 of its onset stress), the
+//   reduced model's rule for the mortar under a station, taken to the elements that bear on
+//   the core. Each element's residual strength uses its own law (lc = V^(1/3)), so a crack
+//   counts at the same opening as in the reduced model's faces and walls;
 // - lateral displacements: the largest sqrt(u_y^2 + u_z^2) of a core node and of a casing
 //   node; global_buckling: the casing's lateral displacement exceeded L_y / 250 less the
 //   clearance (the first half of the reduced model's rule; the second half, the bow growing
 //   by more than the shortening over a step, is not applied: stated as a difference);
 // - cumulative_inelastic_deformation: analysis::inelastic_deformation_increment over records;
 // - max_buckling_half_waves: not measured (0).
+// The indicators after every output record are kept as the cyclic test's history
+// (`brb solid --histories` writes them as element_history.csv): there the core strain is the
+// brace's deformation over its yielding length and the dissipated energy the energy balance's.
 #pragma once
 
 #include "brb/analysis/cyclic_test.hpp"

@@ -28,6 +28,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -43,10 +44,26 @@ struct SolidExplicitSettings {
   double time_step = 0.0;          ///< s; 0: the stable step (a larger one is refused)
 };
 
+/// A face that stays plane and may rotate freely about the two axes across x through its
+/// mass centre (a rigid end plate on a spherical pin; `brb solid`'s pinned end faces). The x
+/// DOFs of its nodes must be prescribed: they follow their prescribed values (the plate's
+/// translation) plus theta_1 l_i1 + theta_2 l_i2, where the two angles are free DOFs of the
+/// solver with the inertia J_k = sum_i m_i l_ik^2 of the nodes' x masses, and the lever arms
+/// l_ik = r_i . e_k are the nodes' (y, z) offsets from the mass centre along the principal
+/// axes e_k of that inertia (so the two angles do not couple through the mass, and the
+/// plate's translation does not couple to them). Small rotations: the x displacements are
+/// linear in the angles, the nodes' y and z stay free (or held by other prescribed DOFs).
+struct PivotingFace {
+  std::vector<int> nodes;
+  Eigen::Matrix2Xd positions; ///< (y, z) of each node in the reference configuration (mm)
+};
+
 /// Displacements u_d(t) = values_d x history(t) of the prescribed DOFs (history(0) = 0 for a
-/// start at rest) and external forces f(t) = load x load_history(t).
+/// start at rest), plus the rotations of the pivoting faces, and external forces
+/// f(t) = load x load_history(t).
 struct SolidLoading {
   PrescribedDisplacements prescribed;
+  std::vector<PivotingFace> pivoting_faces;
   std::function<double(double)> history = [](double) { return 1.0; };
   Eigen::VectorXd load; ///< full DOF vector (N); empty: none
   std::function<double(double)> load_history = [](double) { return 1.0; };
@@ -87,23 +104,39 @@ public:
   const Eigen::VectorXd& velocity() const { return velocity_; }
   /// Internal forces of the committed state (reactions on the prescribed DOFs).
   const Eigen::VectorXd& internal_force() const { return force_; }
+  /// The pivoting faces' angles about their principal axes (rad; two per face, in order).
+  const Eigen::VectorXd& pivot_angles() const { return pivot_angle_; }
   const SolidExplicitEnergy& energy() const { return energy_; }
 
 private:
   bool advance(double dt, std::string& failure);
   void take_model_energies();
   void fill_prescribed(double t, Eigen::VectorXd& full) const;
+  /// Accelerations of the state vector (free DOFs, then the pivots' angles) under the internal
+  /// forces `force` (full DOFs) and the loads at time t.
+  void accelerations(const Eigen::VectorXd& force, double t, Eigen::VectorXd& acceleration) const;
+  /// Adds the pivoting faces' rotations `angles` to the x DOFs of their nodes in `full`.
+  void add_pivot_rotations(const Eigen::VectorXd& angles, Eigen::VectorXd& full) const;
+
+  /// A pivoting face as the solver uses it: its nodes' x DOFs and their lever arms about
+  /// the two principal axes.
+  struct Pivot {
+    std::vector<int> dofs;
+    std::array<std::vector<double>, 2> lever;
+  };
 
   Model& model_;
   SolidLoading loading_;
   std::vector<int> free_dofs_;
-  Eigen::VectorXd mass_; // free DOFs
+  std::vector<Pivot> pivots_;
+  Eigen::VectorXd mass_; // free DOFs, then the pivots' inertias (two per face)
   double stable_step_ = 0.0;
   double time_step_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;
   Eigen::VectorXd displacement_, velocity_, force_; // full DOFs
-  Eigen::VectorXd acceleration_;                    // free DOFs
+  Eigen::VectorXd acceleration_;                    // free DOFs, then the pivots' angles
+  Eigen::VectorXd pivot_angle_, pivot_rate_;        // rad, rad/s: two per pivoting face
   SolidExplicitEnergy energy_;
 };
 
