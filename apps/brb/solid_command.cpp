@@ -95,9 +95,7 @@ nlohmann::ordered_json solid_block(const SolidCommand& command, const model::Sol
   block["nodes"] = run.nodes;
   block["elements"] = run.elements;
   block["half_length"] = mesh.half_length;
-  block["end_faces"] = mesh.end_faces == model::SolidEndFaces::pinned    ? "pinned"
-                       : mesh.end_faces == model::SolidEndFaces::clamped ? "clamped"
-                                                                         : "centre_lines";
+  block["end_faces"] = model::end_faces_name(mesh.end_faces);
   block["mass_scaling"] = mesh.mass_scaling;
   block["threads"] = command.threads.value_or(mesh.threads);
   block["time_step_s"] = run.time_step;

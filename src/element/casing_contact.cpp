@@ -16,6 +16,11 @@ void require(bool condition, const char* field, const std::string& expected) {
     throw ParameterError(field, expected);
 }
 
+/// The lateral direction a face bears in (faces 0, 1: +y, -y; 2, 3: +z, -z): 0 y, 1 z.
+constexpr std::size_t face_lateral(int face) {
+  return face < 2 ? 0 : 1;
+}
+
 } // namespace
 
 void CasingContactParameters::validate() const {
@@ -160,7 +165,7 @@ CasingContact::Chord CasingContact::chord(std::span<const NodeConfiguration> con
 
 double CasingContact::penetration(int face) const {
   const int direction = 1 + face / 2;
-  const double gap = direction == 1 ? parameters_.gap_y : parameters_.gap_z;
+  const double gap = parameters_.gap(face_lateral(face));
   const double motion = face % 2 == 0 ? trial_.relative[direction] : -trial_.relative[direction];
   return motion - gap + expansion_[direction - 1];
 }
@@ -343,13 +348,12 @@ CasingContact::FaceBearing CasingContact::bear(int face, double face_penetration
   FaceBearing result;
   if (!(face_penetration > 0.0))
     return result;
-  const int direction = 1 + face / 2;
-  const double area = direction == 1 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
-  const double depth = direction == 1 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
+  const std::size_t lateral = face_lateral(face);
+  const double area = parameters_.bearing_area(lateral);
+  const double depth = parameters_.bearing_depth(lateral);
   result.loaded = true;
   result.strain = -face_penetration / depth;
-  const auto response = bearing_[static_cast<std::size_t>(direction - 1)].evaluate(
-      committed_.faces[face], result.strain);
+  const auto response = bearing_[lateral].evaluate(committed_.faces[face], result.strain);
   result.state = response.state;
   result.force = -area * response.stress; // >= 0, pushes the core back
   result.stiffness = area * response.tangent / depth;
@@ -363,8 +367,8 @@ CasingContact::FaceBearing CasingContact::bear(int face, double face_penetration
 CasingContact::WallResponse CasingContact::stretch_walls(int direction, double opening) const {
   const CasingSplitting& splitting = *parameters_.splitting;
   const std::size_t d = static_cast<std::size_t>(direction - 1);
-  const double area = direction == 1 ? splitting.wall_area_y : splitting.wall_area_z;
-  const double length = direction == 1 ? splitting.wall_length_y : splitting.wall_length_z;
+  const double area = splitting.wall_area(d);
+  const double length = splitting.wall_length(d);
   WallResponse result;
   result.strain = opening / length;
   const auto response = walls_[d].evaluate(committed_.walls[d], result.strain);
@@ -489,19 +493,16 @@ ElementEnergy CasingContact::energy() const {
   const Vector3& relative = trial_.relative;
   energy.stored = 0.5 * layer * (relative[1] * relative[1] + relative[2] * relative[2]);
   for (int face = 0; face < 4; ++face) {
-    const int direction = face < 2 ? 0 : 1;
-    const double area = direction == 0 ? parameters_.bearing_area_y : parameters_.bearing_area_z;
-    const double depth = direction == 0 ? parameters_.bearing_depth_y : parameters_.bearing_depth_z;
-    const double volume = area * depth;
+    const std::size_t lateral = face_lateral(face);
+    const double volume = parameters_.bearing_area(lateral) * parameters_.bearing_depth(lateral);
     energy.stored +=
-        volume * bearing_[direction].free_energy(trial_.faces[face], trial_.bearing_strain[face]);
+        volume * bearing_[lateral].free_energy(trial_.faces[face], trial_.bearing_strain[face]);
     energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.faces[face]);
   }
   for (std::size_t d = 0; d < walls_.size(); ++d) {
     // the walls' volume: area x L_w
     const CasingSplitting& splitting = *parameters_.splitting;
-    const double volume = d == 0 ? splitting.wall_area_y * splitting.wall_length_y
-                                 : splitting.wall_area_z * splitting.wall_length_z;
+    const double volume = splitting.wall_area(d) * splitting.wall_length(d);
     energy.stored += volume * walls_[d].free_energy(trial_.walls[d], trial_.wall_strain[d]);
     energy.dissipated += volume * material::MortarUniaxial::dissipated_energy(trial_.walls[d]);
   }
@@ -545,8 +546,7 @@ double CasingContact::max_mortar_damage() const {
 double CasingContact::min_residual_strength() const {
   double weakest = 1.0;
   for (int face = 0; face < 4; ++face) {
-    const std::size_t direction = face < 2 ? 0 : 1;
-    weakest = std::min(weakest, bearing_[direction].residual_strength(trial_.faces[face]));
+    weakest = std::min(weakest, bearing_[face_lateral(face)].residual_strength(trial_.faces[face]));
   }
   for (std::size_t d = 0; d < walls_.size(); ++d) // none without CasingSplitting
     weakest = std::min(weakest, walls_[d].residual_strength(trial_.walls[d]));

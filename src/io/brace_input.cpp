@@ -9,6 +9,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -43,7 +44,7 @@ int positive_count(const JsonValue& value, std::string_view meaning) {
 /// A string option: the value paired with the text found, or an error listing the choices.
 template <class Value>
 Value one_of(const JsonValue& option, std::string_view meaning,
-             std::initializer_list<std::pair<std::string_view, Value>> choices) {
+             std::span<const std::pair<std::string_view, Value>> choices) {
   const std::string text = option.string(meaning);
   std::string names;
   for (const auto& [name, value] : choices) {
@@ -53,6 +54,14 @@ Value one_of(const JsonValue& option, std::string_view meaning,
   }
   throw option.error("unknown " + std::string(meaning) + " \"" + text + "\"; expected one of " +
                      names);
+}
+
+template <class Value>
+Value one_of(const JsonValue& option, std::string_view meaning,
+             std::initializer_list<std::pair<std::string_view, Value>> choices) {
+  return one_of(
+      option, meaning,
+      std::span<const std::pair<std::string_view, Value>>(choices.begin(), choices.size()));
 }
 
 SectionSpec read_section(const JsonValue& object) {
@@ -458,10 +467,7 @@ model::SolidMeshSpec read_solid(const JsonValue& object) {
   }
   if (const auto ends = object.find("end_faces")) {
     solid.end_faces =
-        one_of<model::SolidEndFaces>(*ends, "end faces' support",
-                                     {{"centre_lines", model::SolidEndFaces::centre_lines},
-                                      {"clamped", model::SolidEndFaces::clamped},
-                                      {"pinned", model::SolidEndFaces::pinned}});
+        one_of<model::SolidEndFaces>(*ends, "end faces' support", model::kSolidEndFacesNames);
   }
   for (const auto& [key, value] : {std::pair{"steel_density", &solid.steel_density},
                                    std::pair{"mortar_density", &solid.mortar_density}}) {

@@ -6,6 +6,14 @@
 
 namespace brb::model {
 
+std::string_view end_faces_name(SolidEndFaces faces) {
+  for (const auto& [name, value] : kSolidEndFacesNames) {
+    if (value == faces)
+      return name;
+  }
+  return "unknown";
+}
+
 section::FiberLayout SectionSpec::mesh() const {
   switch (shape) {
   case SectionShape::rectangle:

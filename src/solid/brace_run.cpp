@@ -228,10 +228,9 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     r.point = point;
     r.steps = solver.steps();
     r.time = solver.time();
-    // the driven face's translation (a pivoting face's nodes also carry its rotation)
-    r.deformation = loading.pivoting_faces.empty()
-                        ? solver.displacement()[3 * mesh.loaded_end.front()] / drive
-                        : loading.history(solver.time());
+    // the driven face's translation, drive x history(t), over drive (1 or 1/2: exact); read
+    // from the history since a pivoting face's nodes also carry its rotation
+    r.deformation = loading.history(solver.time());
     for (int node : mesh.loaded_end)
       r.force += solver.internal_force()[3 * node];
     const SolidExplicitEnergy& e = solver.energy();

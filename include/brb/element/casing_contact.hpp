@@ -64,6 +64,12 @@ struct CasingSplitting {
   double wall_length_y = 0.0;
   double wall_length_z = 0.0;
 
+  /// The pair's member for a lateral direction (0: the y faces' split, 1: the z faces').
+  double wall_area(std::size_t lateral) const { return lateral == 0 ? wall_area_y : wall_area_z; }
+  double wall_length(std::size_t lateral) const {
+    return lateral == 0 ? wall_length_y : wall_length_z;
+  }
+
   /// Throws ParameterError naming the key (wall_area_y, ...).
   void validate() const;
 };
@@ -83,6 +89,15 @@ struct CasingContactParameters {
   double friction_coefficient = 0.1;        ///< kappa (source: 0.1)
   double tangential_stiffness = 0.0;        ///< stick penalty along the axis (N/mm)
   std::optional<CasingSplitting> splitting; ///< a mortar-only casing's split (none: rigid)
+
+  /// The y or z member of a pair for a lateral direction (0: y, 1: z).
+  double gap(std::size_t lateral) const { return lateral == 0 ? gap_y : gap_z; }
+  double bearing_area(std::size_t lateral) const {
+    return lateral == 0 ? bearing_area_y : bearing_area_z;
+  }
+  double bearing_depth(std::size_t lateral) const {
+    return lateral == 0 ? bearing_depth_y : bearing_depth_z;
+  }
 
   /// Throws ParameterError naming the key (gap_y, gap_z, bearing_area_y, ...).
   void validate() const;

@@ -11,8 +11,10 @@
 #include "brb/material/steel_parameters.hpp"
 #include "brb/section/fiber_layout.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 namespace brb::model {
@@ -152,6 +154,16 @@ enum class SolidTube { elements, homogenised };
 /// rotates freely about y and z through its centre (a rigid end plate on a spherical pin,
 /// solid_explicit.hpp's PivotingFace): the reduced model's "ends": "pinned".
 enum class SolidEndFaces { centre_lines, clamped, pinned };
+
+/// The brace schema's names of SolidEndFaces (the solid block's `end_faces`): read by
+/// io::read_brace, written back by end_faces_name (brb solid's summary).
+inline constexpr std::array<std::pair<std::string_view, SolidEndFaces>, 3> kSolidEndFacesNames{
+    {{"centre_lines", SolidEndFaces::centre_lines},
+     {"clamped", SolidEndFaces::clamped},
+     {"pinned", SolidEndFaces::pinned}}};
+
+/// The schema's name of an end-face support ("centre_lines", "clamped" or "pinned").
+std::string_view end_faces_name(SolidEndFaces faces);
 
 /// The `solid` block of a brace file: the 3D continuum mesh of the brace (issue 6;
 /// solid/brace_mesh.hpp states the geometry). Defaults as listed.
