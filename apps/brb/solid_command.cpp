@@ -2,6 +2,7 @@
 
 #include "cyclic_command.hpp"
 #include "output_directory.hpp"
+#include "progress_line.hpp"
 
 #include "brb/io/atomic_file.hpp"
 #include "brb/io/brace_input.hpp"
@@ -180,6 +181,11 @@ CLI::App* add_solid_command(CLI::App& app, SolidCommand& command) {
   solid->add_flag("--histories", command.histories,
                   "Also write element_history.csv: the element outputs (damage, residual "
                   "strength, flags) after every step, as brb cyclic --histories");
+  add_progress_option(*solid, command.progress_interval,
+                      "Print a progress line on stderr at most every SECONDS of wall time (0: "
+                      "after every record) and after the last: record k of N, deformation, "
+                      "force, explicit steps so far, elapsed time (a 3D run takes minutes to "
+                      "hours)");
   solid->footer(
       "Outputs (README, \"brb solid\"):\n"
       "  hysteresis.csv, summary.json: as brb cyclic (summary.json adds a \"solid\" block:\n"
@@ -222,8 +228,28 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
   fs::create_directory(command.output_directory);
   if (snapshots)
     fs::create_directory(fields_directory);
+  const auto start = std::chrono::steady_clock::now();
+  auto last_progress = start;
+  const auto report_progress = [&](const solid::SolidBraceRecord& record) {
+    const auto now = std::chrono::steady_clock::now();
+    if (step != last_step &&
+        std::chrono::duration<double>(now - last_progress).count() < *command.progress_interval)
+      return;
+    last_progress = now;
+    const double share = last_step > 0 ? 100.0 * step / last_step : 100.0;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "brb: solid: record %d of %d (%.1f %%), deformation %.4g mm, force %.6g N, "
+                  "%ld explicit steps, %.1f s\n",
+                  step, last_step, share, record.deformation, record.force,
+                  static_cast<long>(record.steps),
+                  std::chrono::duration<double>(now - start).count());
+    notes << line << std::flush;
+  };
   const auto observer = [&](const solid::SolidBraceState& state) {
     ++step; // records come in order: record k is hysteresis step k
+    if (command.progress_interval)
+      report_progress(state.record);
     const bool wanted =
         chosen.contains(step) ||
         (command.snapshot_every > 0 && (step % command.snapshot_every == 0 || step == last_step));
@@ -235,10 +261,10 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
     written.push_back({state.record.time, fs::path("fields") / file_name});
   };
 
-  const auto start = std::chrono::steady_clock::now();
   const solid::SolidCyclicResult result = solid::run_solid_cyclic(
       spec, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, reduced.yield_force, dy,
-      settings, snapshots ? solid::SolidBraceObserver(observer) : nullptr);
+      settings,
+      snapshots || command.progress_interval ? solid::SolidBraceObserver(observer) : nullptr);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

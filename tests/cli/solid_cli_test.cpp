@@ -210,6 +210,31 @@ TEST(SolidCli, HistoriesWriteTheElementOutputsAfterEveryStep) {
   EXPECT_GT(last[3], 0.0) << "the bar yielded";
 }
 
+TEST(SolidCli, ProgressPrintsOneLinePerRecordAtZeroSecondsAndEndsAtTheLast) {
+  const SolidFiles files(bar_brace());
+  const CliRun run = run_brb(files.arguments("--progress 0"));
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  const auto hysteresis = lines_of(read_file(files.out / "hysteresis.csv"));
+  const std::size_t records = hysteresis.size() - 2; // past the header and the initial point
+  std::size_t lines = 0;
+  std::string last;
+  for (const std::string& line : lines_of(run.err)) {
+    if (line.rfind("brb: solid: record ", 0) == 0) {
+      ++lines;
+      last = line;
+    }
+  }
+  // one per record (0 s), the initial one too, the last one naming it and 100 %
+  EXPECT_EQ(lines, records + 1) << run.err;
+  const std::string tail =
+      std::to_string(records) + " of " + std::to_string(records) + " (100.0 %)";
+  EXPECT_NE(last.find(tail), std::string::npos) << last;
+  // a bad interval is a usage error naming the option
+  const CliRun bad = run_brb(files.arguments("--progress=-1"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--progress"), std::string::npos) << bad.err;
+}
+
 TEST(SolidCli, TheShortestExcursionTimeIsKeptInTheSummaryAndExcludesADuration) {
   const SolidFiles files(bar_brace());
   const CliRun run = run_brb(files.arguments("--min-excursion-time 0.5"));
