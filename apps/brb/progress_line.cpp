@@ -10,9 +10,9 @@
 namespace brb::cli {
 
 ProgressLine::ProgressLine(std::ostream& out, std::string label, std::size_t steps, double interval,
-                           std::mutex* lock)
-    : out_(&out), label_(std::move(label)), steps_(steps), interval_(interval), lock_(lock),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+                           std::mutex* lock, std::string counted)
+    : out_(&out), label_(std::move(label)), counted_(std::move(counted)), steps_(steps),
+      interval_(interval), lock_(lock), start_(std::chrono::steady_clock::now()), last_(start_) {}
 
 void ProgressLine::operator()(const analysis::CyclicStep& step) {
   substeps_ += step.substeps;
@@ -26,7 +26,7 @@ void ProgressLine::operator()(const analysis::CyclicStep& step) {
   line << label_ << "step " << step.step << " of " << steps_ << " (" << std::fixed
        << std::setprecision(1) << done << " %), deformation " << std::setprecision(3)
        << step.deformation << " mm, force " << std::setprecision(0) << step.force << " N, "
-       << substeps_ << " substeps, " << std::setprecision(1)
+       << substeps_ << " " << counted_ << ", " << std::setprecision(1)
        << std::chrono::duration<double>(now - start_).count() << " s\n";
   const std::unique_lock guard = lock_ ? std::unique_lock(*lock_) : std::unique_lock<std::mutex>();
   *out_ << line.str() << std::flush;

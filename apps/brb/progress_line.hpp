@@ -16,19 +16,21 @@
 namespace brb::cli {
 
 /// An analysis::StepObserver that prints "<label>step k of N (p %), deformation d mm, force
-/// f N, s substeps, t s" (substeps so far, wall time since it was made) at most every
-/// `interval` seconds of wall time (0: after every step) and after the last step. `lock`,
-/// when given, guards `out` for runs that share it on several threads.
+/// f N, s <counted>, t s" (the steps' `substeps` summed so far, wall time since it was made)
+/// at most every `interval` seconds of wall time (0: after every step) and after the last
+/// step. `counted` names what `substeps` counts ("explicit steps" for brb solid's records).
+/// `lock`, when given, guards `out` for runs that share it on several threads.
 class ProgressLine {
 public:
   ProgressLine(std::ostream& out, std::string label, std::size_t steps, double interval,
-               std::mutex* lock = nullptr);
+               std::mutex* lock = nullptr, std::string counted = "substeps");
 
   void operator()(const analysis::CyclicStep& step);
 
 private:
   std::ostream* out_;
   std::string label_;
+  std::string counted_;
   std::size_t steps_;
   double interval_;
   std::mutex* lock_;

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -181,11 +182,11 @@ CLI::App* add_solid_command(CLI::App& app, SolidCommand& command) {
   solid->add_flag("--histories", command.histories,
                   "Also write element_history.csv: the element outputs (damage, residual "
                   "strength, flags) after every step, as brb cyclic --histories");
-  add_progress_option(*solid, command.progress_interval,
-                      "Print a progress line on stderr at most every SECONDS of wall time (0: "
-                      "after every record) and after the last: record k of N, deformation, "
-                      "force, explicit steps so far, elapsed time (a 3D run takes minutes to "
-                      "hours)");
+  add_progress_option(
+      *solid, command.progress_interval,
+      "Print a progress line on stderr at most every SECONDS of wall time (0: after every "
+      "record) and after the last: step k of N (hysteresis.csv's records), deformation, force, "
+      "explicit steps so far, elapsed time (a 3D run takes minutes to hours)");
   solid->footer(
       "Outputs (README, \"brb solid\"):\n"
       "  hysteresis.csv, summary.json: as brb cyclic (summary.json adds a \"solid\" block:\n"
@@ -229,27 +230,19 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
   if (snapshots)
     fs::create_directory(fields_directory);
   const auto start = std::chrono::steady_clock::now();
-  auto last_progress = start;
-  const auto report_progress = [&](const solid::SolidBraceRecord& record) {
-    const auto now = std::chrono::steady_clock::now();
-    if (step != last_step &&
-        std::chrono::duration<double>(now - last_progress).count() < *command.progress_interval)
-      return;
-    last_progress = now;
-    const double share = last_step > 0 ? 100.0 * step / last_step : 100.0;
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "brb: solid: record %d of %d (%.1f %%), deformation %.4g mm, force %.6g N, "
-                  "%ld explicit steps, %.1f s\n",
-                  step, last_step, share, record.deformation, record.force,
-                  static_cast<long>(record.steps),
-                  std::chrono::duration<double>(now - start).count());
-    notes << line << std::flush;
-  };
+  std::optional<ProgressLine> progress;
+  if (command.progress_interval)
+    progress.emplace(notes, "brb: solid: ", static_cast<std::size_t>(last_step),
+                     *command.progress_interval, nullptr, "explicit steps");
+  long explicit_steps = 0; // up to the previous record
   const auto observer = [&](const solid::SolidBraceState& state) {
     ++step; // records come in order: record k is hysteresis step k
-    if (command.progress_interval)
-      report_progress(state.record);
+    if (progress) {
+      const solid::SolidBraceRecord& record = state.record;
+      (*progress)({step, 0, record.deformation, record.force, 0.0,
+                   static_cast<int>(record.steps - explicit_steps)});
+      explicit_steps = record.steps;
+    }
     const bool wanted =
         chosen.contains(step) ||
         (command.snapshot_every > 0 && (step % command.snapshot_every == 0 || step == last_step));
@@ -263,8 +256,7 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
 
   const solid::SolidCyclicResult result = solid::run_solid_cyclic(
       spec, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, reduced.yield_force, dy,
-      settings,
-      snapshots || command.progress_interval ? solid::SolidBraceObserver(observer) : nullptr);
+      settings, snapshots || progress ? solid::SolidBraceObserver(observer) : nullptr);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

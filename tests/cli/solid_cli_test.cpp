@@ -219,7 +219,7 @@ TEST(SolidCli, ProgressPrintsOneLinePerRecordAtZeroSecondsAndEndsAtTheLast) {
   std::size_t lines = 0;
   std::string last;
   for (const std::string& line : lines_of(run.err)) {
-    if (line.rfind("brb: solid: record ", 0) == 0) {
+    if (line.rfind("brb: solid: step ", 0) == 0) {
       ++lines;
       last = line;
     }
