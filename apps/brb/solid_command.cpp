@@ -239,8 +239,10 @@ int run_solid_command(const SolidCommand& command, std::ostream& report, std::os
     ++step; // records come in order: record k is hysteresis step k
     if (progress) {
       const solid::SolidBraceRecord& record = state.record;
-      (*progress)({step, 0, record.deformation, record.force, 0.0,
-                   static_cast<int>(record.steps - explicit_steps)});
+      (*progress)({.step = step,
+                   .deformation = record.deformation,
+                   .force = record.force,
+                   .substeps = static_cast<int>(record.steps - explicit_steps)});
       explicit_steps = record.steps;
     }
     const bool wanted =
