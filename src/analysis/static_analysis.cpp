@@ -542,20 +542,23 @@ void StaticAnalysis::revert() {
     element->revert_to_committed();
 }
 
-bool StaticAnalysis::halve(double from, double to, int depth, StepReport& report) {
+bool StaticAnalysis::halve(double from, double to, int depth, StepReport& report,
+                           FarCuts far_cuts) {
   revert();
   const double middle = 0.5 * (from + to);
-  return try_increment(from, middle, depth + 1, report) &&
-         try_increment(middle, to, depth + 1, report);
+  return try_increment(from, middle, depth + 1, report, far_cuts) &&
+         try_increment(middle, to, depth + 1, report, far_cuts);
 }
 
-bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport& report) {
+bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport& report,
+                                   FarCuts far_cuts) {
   report.deepest_halving = std::max(report.deepest_halving, depth);
   // Tangent predictor from the converged state.
   revert();
   mark_path_point();
   Attempt attempt;
   bool landed_far = false;
+  double correction_ratio = 0.0;
   if (assemble(true, attempt.failure)) {
     Eigen::VectorXd load;
     if (kinematic_control()) {
@@ -581,7 +584,16 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
     const std::vector<NodeConfiguration> predicted = trial_;
     attempt = newton(to, nullptr, settings_.max_iterations);
-    landed_far = attempt.converged && !lands_near_predictor(attempt, predicted);
+    landed_far = attempt.converged && !lands_near_predictor(attempt, predicted, &correction_ratio);
+    // Far at three depths by a steady ratio as the predictor halved: a steep path, not a jump
+    // (NewtonSettings::far_ratio_growth).
+    const double growth = settings_.far_ratio_growth;
+    const auto steady = [growth](double ratio, double previous) {
+      return ratio <= growth * previous && previous <= growth * ratio;
+    };
+    if (landed_far && far_cuts.before > 0.0 && steady(correction_ratio, far_cuts.last) &&
+        steady(far_cuts.last, far_cuts.before))
+      landed_far = false;
     if (attempt.converged && jumped_past_peak()) {
       // Crushed from intact within the substep: another branch (jumped_past_peak). Cut;
       // at the floor the state is not the path either, so the step is treated as failed
@@ -600,7 +612,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
     ++report.far_branch_cuts;
     ++far_branch_cuts_;
-    return halve(from, to, depth, report);
+    return halve(from, to, depth, report, {correction_ratio, far_cuts.last});
   }
   bool stable = true;
   if (attempt.converged && settings_.require_stable_equilibrium) {
@@ -616,7 +628,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     // branch (NewtonSettings::max_correction_ratio). Cut it so the path is followed.
     ++report.far_branch_cuts;
     ++far_branch_cuts_;
-    return halve(from, to, depth, report);
+    return halve(from, to, depth, report, {});
   }
   if (attempt.converged && !(within_energy_tolerance(step) && within_balance_tolerance(step))) {
     if (depth < std::min(settings_.energy_halvings, settings_.max_halvings)) {
@@ -625,7 +637,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
       // (NewtonSettings::energy_tolerance, balance_tolerance).
       ++report.energy_cuts;
       ++energy_cuts_;
-      return halve(from, to, depth, report);
+      return halve(from, to, depth, report, {});
     }
     ++report.energy_tolerance_missed;
     ++energy_tolerance_missed_;
@@ -650,7 +662,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     return true;
   }
   if (!at_floor)
-    return halve(from, to, depth, report);
+    return halve(from, to, depth, report, {});
   if (pass_limit_point(to, report))
     return true;
   revert();
@@ -660,7 +672,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
 }
 
 bool StaticAnalysis::lands_near_predictor(const Attempt& attempt,
-                                          const std::vector<NodeConfiguration>& predicted) const {
+                                          const std::vector<NodeConfiguration>& predicted,
+                                          double* correction_ratio) const {
   // A Newton that started within tolerance only polished an equilibrium
   // (NewtonSettings::polish_corrections): not a landing on another branch, however small the
   // step's own motion against which the corrections are measured.
@@ -672,6 +685,8 @@ bool StaticAnalysis::lands_near_predictor(const Attempt& attempt,
         std::max(prediction, (predicted[node].position - committed_[node].position).norm());
     correction = std::max(correction, (trial_[node].position - predicted[node].position).norm());
   }
+  if (correction_ratio != nullptr)
+    *correction_ratio = correction / std::max(prediction, std::numeric_limits<double>::min());
   // Round-off floor: positions carry ~1e-14 of the model's size.
   return correction <= settings_.max_correction_ratio * prediction +
                            1e3 * settings_.position_round_off * model_extent_;
@@ -763,7 +778,7 @@ StepReport StaticAnalysis::step_to(double target) {
     path_start_control_ = control_value_;
     path_target_ = motion_target_;
   }
-  report.converged = try_increment(control_value_, target, 0, report);
+  report.converged = try_increment(control_value_, target, 0, report, {});
   recording_path_ = false;
   if (!report.converged)
     path_.clear();

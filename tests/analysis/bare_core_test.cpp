@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -153,8 +154,8 @@ TEST(BareCore, ABuckledHardeningCoreCarriesAtLeastTheTangentModulusLoad) {
   // peak of 4.6 Py) asks for less than P_t there (validation/thesis_small_case1).
   // the specimen's own brace file (10 x 10 mm, 100 mm, 10 elements, pinned, bow L/1000),
   // its casing taken away
-  model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/thesis_small_case1/brace.json");
+  model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" /
+                                         "thesis_small_case1" / "brace.json");
   spec.casing.reset();
   model::BraceModel brace = model::build_brace_model(spec);
   const double dy = brace.yield_deformation;

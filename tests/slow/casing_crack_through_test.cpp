@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -25,8 +26,8 @@ namespace brb::analysis {
 namespace {
 
 TEST(CasingCrackThrough, TheSmallBracesMortarCasingCracksThroughAndTheCoreBuckles) {
-  const model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/thesis_small_case1/brace.json");
+  const model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) /
+                                               "validation" / "thesis_small_case1" / "brace.json");
   model::BraceModel brace = model::build_brace_model(spec);
   const double dy = brace.yield_deformation;
   // monotonic shortening to -6 mm in steps of dy / 2 (the validation protocol's dy / 10 takes

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -130,8 +131,8 @@ TEST(CasingSplittingBrace, CaseOneWithTheSplitCasingBucklesAsAWholeAndTheRunGoes
   // stays on the root the path is on; from the step's committed opening it jumped to
   // another, the path control refused every pseudo-time step and the run stopped at
   // -36.8 dy (validation/README, casing splitting).
-  model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/thesis_small_case1/brace.json");
+  model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" /
+                                         "thesis_small_case1" / "brace.json");
   spec.casing->splitting = true;
   model::BraceModel brace = model::build_brace_model(spec);
   const double target = -38.0 * brace.yield_deformation;

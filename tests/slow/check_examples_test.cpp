@@ -3,8 +3,8 @@
 // Expected (issue 8, the example's stated reason): FAIL on K3.8d beta alone, with the whole
 // sequence run and the casing holding; and the cause is the expansion: the same brace with
 // the expansion off passes beta. Slow: each check runs the K3.4c sequence on a 16-element
-// brace (the first check 32 s when written, 183 s at eeeedc9: the solver's far-branch cuts
-// since the projected line search, an open slowdown; the control about 33 s).
+// brace (the first check 32 s when written, 183 s at eeeedc9, 121 s since the steep-path test
+// of the far-branch control, NewtonSettings::far_ratio_growth; the control about 33 s).
 #include "brb/design/check.hpp"
 #include "brb/design/check_input.hpp"
 

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
@@ -64,7 +65,7 @@ struct SpreadRun {
 /// (`saturating`: what is left, the back stresses and Voce, saturates).
 SpreadRun run_pc160(bool saturating) {
   model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/PC160/brace.json");
+      io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" / "PC160" / "brace.json");
   EXPECT_TRUE(spec.casing.has_value() && spec.casing->high_mode_waves.has_value());
   EXPECT_GT(spec.steel.kinematic_hardening, 0.0);
   if (saturating)

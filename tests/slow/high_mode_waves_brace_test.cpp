@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -22,7 +23,7 @@ struct WaveRun {
 
 WaveRun run_pc250(bool waves, double friction) {
   model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/PC250/brace.json");
+      io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" / "PC250" / "brace.json");
   if (waves)
     spec.casing->high_mode_waves = 4.0;
   else

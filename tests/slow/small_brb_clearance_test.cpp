@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -39,8 +40,8 @@ struct ClearanceRun {
 };
 
 ClearanceRun run_case_four(double clearance) {
-  model::BraceSpec spec =
-      io::read_brace(std::string(BRB_SOURCE_DIR) + "/validation/thesis_small_case4/brace.json");
+  model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" /
+                                         "thesis_small_case4" / "brace.json");
   spec.casing->gap_y = clearance;
   spec.casing->gap_z = clearance;
   model::BraceModel brace = model::build_brace_model(spec);
