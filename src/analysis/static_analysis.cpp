@@ -557,7 +557,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   revert();
   mark_path_point();
   Attempt attempt;
-  bool landed_far = false;
+  bool landed_far = false, corrected_far = false;
   double correction_ratio = 0.0;
   if (assemble(true, attempt.failure)) {
     Eigen::VectorXd load;
@@ -594,6 +594,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     if (landed_far && far_cuts.before > 0.0 && steady(correction_ratio, far_cuts.last) &&
         steady(far_cuts.last, far_cuts.before))
       landed_far = false;
+    // (a crush below is another reason to cut, with no ratio for the halves to keep)
+    corrected_far = landed_far;
     if (attempt.converged && jumped_past_peak()) {
       // Crushed from intact within the substep: another branch (jumped_past_peak). Cut;
       // at the floor the state is not the path either, so the step is treated as failed
@@ -612,7 +614,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
     ++report.far_branch_cuts;
     ++far_branch_cuts_;
-    return halve(from, to, depth, report, {correction_ratio, far_cuts.last});
+    return halve(from, to, depth, report,
+                 corrected_far ? FarCuts{correction_ratio, far_cuts.last} : FarCuts{});
   }
   bool stable = true;
   if (attempt.converged && settings_.require_stable_equilibrium) {
