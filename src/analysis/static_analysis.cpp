@@ -557,8 +557,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
   revert();
   mark_path_point();
   Attempt attempt;
-  bool landed_far = false, corrected_far = false;
-  double correction_ratio = 0.0;
+  bool landed_far = false;
+  FarCuts halves_far_cuts; // what the halves keep if the step is cut for its correction
   if (assemble(true, attempt.failure)) {
     Eigen::VectorXd load;
     if (kinematic_control()) {
@@ -584,6 +584,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     }
     const std::vector<NodeConfiguration> predicted = trial_;
     attempt = newton(to, nullptr, settings_.max_iterations);
+    double correction_ratio = 0.0;
     landed_far = attempt.converged && !lands_near_predictor(attempt, predicted, &correction_ratio);
     // Far at three depths by a steady ratio as the predictor halved: a steep path, not a jump
     // (NewtonSettings::far_ratio_growth).
@@ -595,7 +596,8 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
         steady(far_cuts.last, far_cuts.before))
       landed_far = false;
     // (a crush below is another reason to cut, with no ratio for the halves to keep)
-    corrected_far = landed_far;
+    if (landed_far)
+      halves_far_cuts = {correction_ratio, far_cuts.last};
     if (attempt.converged && jumped_past_peak()) {
       // Crushed from intact within the substep: another branch (jumped_past_peak). Cut;
       // at the floor the state is not the path either, so the step is treated as failed
@@ -614,8 +616,7 @@ bool StaticAnalysis::try_increment(double from, double to, int depth, StepReport
     // NewtonSettings::max_correction_ratio). Cut the step so the path is followed.
     ++report.far_branch_cuts;
     ++far_branch_cuts_;
-    return halve(from, to, depth, report,
-                 corrected_far ? FarCuts{correction_ratio, far_cuts.last} : FarCuts{});
+    return halve(from, to, depth, report, halves_far_cuts);
   }
   bool stable = true;
   if (attempt.converged && settings_.require_stable_equilibrium) {
