@@ -6,6 +6,7 @@
 #include "brb/material/steel_uniaxial.hpp"
 
 #include "support/brace_fixtures.hpp"
+#include "support/specimen_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -154,8 +155,7 @@ TEST(BareCore, ABuckledHardeningCoreCarriesAtLeastTheTangentModulusLoad) {
   // peak of 4.6 Py) asks for less than P_t there (validation/thesis_small_case1).
   // the specimen's own brace file (10 x 10 mm, 100 mm, 10 elements, pinned, bow L/1000),
   // its casing taken away
-  model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" /
-                                         "thesis_small_case1" / "brace.json");
+  model::BraceSpec spec = io::read_brace(test::specimen_brace("thesis_small_case1"));
   spec.casing.reset();
   model::BraceModel brace = model::build_brace_model(spec);
   const double dy = brace.yield_deformation;

@@ -11,6 +11,7 @@
 #include "brb/io/brace_input.hpp"
 #include "brb/model/brace_model.hpp"
 #include "support/monotonic_shortening.hpp"
+#include "support/specimen_files.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -122,7 +123,7 @@ TEST(CasingSplittingBrace,
 }
 
 TEST(CasingSplittingBrace, CaseOneWithTheSplitCasingBucklesAsAWholeAndTheRunGoesOn) {
-  // validation/thesis_small_case1's brace (0.05 mm clearance) with the splitting on, shortened
+  // validation/solid_small_case1's brace (0.05 mm clearance) with the splitting on, shortened
   // to -38 dy in steps of dy / 10. Near -37 dy the floating casing bows under the core's push
   // and bears on the core's pinned end nodes; the walls of its end stations (half a tributary
   // length) split first, the casing loses its end support and the brace buckles as a whole.
@@ -131,8 +132,7 @@ TEST(CasingSplittingBrace, CaseOneWithTheSplitCasingBucklesAsAWholeAndTheRunGoes
   // stays on the root the path is on; from the step's committed opening it jumped to
   // another, the path control refused every pseudo-time step and the run stopped at
   // -36.8 dy (validation/README, casing splitting).
-  model::BraceSpec spec = io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" /
-                                         "thesis_small_case1" / "brace.json");
+  model::BraceSpec spec = io::read_brace(test::specimen_brace("solid_small_case1"));
   spec.casing->splitting = true;
   model::BraceModel brace = model::build_brace_model(spec);
   const double target = -38.0 * brace.yield_deformation;

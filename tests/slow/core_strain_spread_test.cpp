@@ -14,6 +14,7 @@
 #include "brb/io/brace_input.hpp"
 #include "brb/io/protocol.hpp"
 #include "brb/model/brace_model.hpp"
+#include "support/specimen_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -64,8 +65,7 @@ struct SpreadRun {
 /// PC160's brace with its own steel, or with its linear kinematic hardening taken out
 /// (`saturating`: what is left, the back stresses and Voce, saturates).
 SpreadRun run_pc160(bool saturating) {
-  model::BraceSpec spec =
-      io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" / "PC160" / "brace.json");
+  model::BraceSpec spec = io::read_brace(test::specimen_brace("PC160"));
   EXPECT_TRUE(spec.casing.has_value() && spec.casing->high_mode_waves.has_value());
   EXPECT_GT(spec.steel.kinematic_hardening, 0.0);
   if (saturating)

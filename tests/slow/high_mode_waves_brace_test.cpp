@@ -5,6 +5,7 @@
 #include "brb/io/brace_input.hpp"
 #include "brb/io/protocol.hpp"
 #include "brb/model/brace_model.hpp"
+#include "support/specimen_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,8 +23,7 @@ struct WaveRun {
 };
 
 WaveRun run_pc250(bool waves, double friction) {
-  model::BraceSpec spec =
-      io::read_brace(std::filesystem::path(BRB_SOURCE_DIR) / "validation" / "PC250" / "brace.json");
+  model::BraceSpec spec = io::read_brace(test::specimen_brace("PC250"));
   if (waves)
     spec.casing->high_mode_waves = 4.0;
   else
