@@ -66,13 +66,12 @@ SteelDamagePlasticity3D::Response SteelDamagePlasticity3D::evaluate(const State&
     const auto consistency = [&](double increment) {
       const Vector6 beta = beta_of(increment);
       const double beta_norm = beta.norm();
+      const HardeningResistance resistance = hardening_resistance(
+          terms_, isotropic_, 3.0 * shear, committed.equivalent_plastic_strain, increment);
       ReturnMapEquation equation;
-      equation.residual = kSqrtThreeHalves * beta_norm -
-                          hardening_resistance(terms_, isotropic_, 3.0 * shear,
-                                               committed.equivalent_plastic_strain, increment);
-      equation.slope = kSqrtThreeHalves * beta.dot(beta_rate_of(increment)) / beta_norm -
-                       hardening_resistance_slope(terms_, isotropic_, 3.0 * shear,
-                                                  committed.equivalent_plastic_strain, increment);
+      equation.residual = kSqrtThreeHalves * beta_norm - resistance.value;
+      equation.slope =
+          kSqrtThreeHalves * beta.dot(beta_rate_of(increment)) / beta_norm - resistance.slope;
       return equation;
     };
     plastic_increment = solve_return_map(consistency, trial_function, 3.0 * shear);

@@ -91,6 +91,12 @@ double IsotropicHardening::slope(double p) const {
   return linear + saturation * rate * std::exp(-rate * p);
 }
 
+IsotropicHardening::Response IsotropicHardening::response(double p) const {
+  const double decay = std::exp(-rate * p);
+  return {yield_stress + linear * p + saturation * (1.0 - decay),
+          linear + saturation * rate * decay};
+}
+
 double IsotropicHardening::stored_energy(double p) const {
   // integral_0^p (H p' + Q (1 - exp(-b p'))) dp'; -expm1 keeps it exact for small b p.
   double energy = 0.5 * linear * p * p;

@@ -28,26 +28,26 @@ struct ReturnMapEquation {
   double slope = 0.0;    ///< f'(dp) < 0
 };
 
-/// E_el dp + sum_k C_k dp / (1 + gamma_k dp) + R(p_n + dp): what the relative stress must exceed.
-inline double hardening_resistance(const HardeningTerms& terms, const IsotropicHardening& isotropic,
-                                   double elastic_modulus, double committed_p, double increment) {
-  double resistance = elastic_modulus * increment + isotropic.radius(committed_p + increment);
-  for (int k = 0; k < terms.count; ++k) {
-    resistance += terms.modulus[k] * increment / (1.0 + terms.recall[k] * increment);
-  }
-  return resistance;
-}
+/// What the relative stress must exceed, E_el dp + sum_k C_k dp / (1 + gamma_k dp) + R(p_n +
+/// dp), and its derivative in dp; one exponential for both (IsotropicHardening::response).
+struct HardeningResistance {
+  double value = 0.0; ///< MPa
+  double slope = 0.0; ///< MPa
+};
 
-inline double hardening_resistance_slope(const HardeningTerms& terms,
-                                         const IsotropicHardening& isotropic,
-                                         double elastic_modulus, double committed_p,
-                                         double increment) {
-  double slope = elastic_modulus + isotropic.slope(committed_p + increment);
+inline HardeningResistance hardening_resistance(const HardeningTerms& terms,
+                                                const IsotropicHardening& isotropic,
+                                                double elastic_modulus, double committed_p,
+                                                double increment) {
+  const IsotropicHardening::Response radius = isotropic.response(committed_p + increment);
+  HardeningResistance resistance{elastic_modulus * increment + radius.radius,
+                                 elastic_modulus + radius.slope};
   for (int k = 0; k < terms.count; ++k) {
     const double factor = 1.0 + terms.recall[k] * increment;
-    slope += terms.modulus[k] / (factor * factor);
+    resistance.value += terms.modulus[k] * increment / factor;
+    resistance.slope += terms.modulus[k] / (factor * factor);
   }
-  return slope;
+  return resistance;
 }
 
 /// Safeguarded Newton on the bracket [0, f(0)/E_el]; converges to round-off.

@@ -54,13 +54,11 @@ SteelUniaxial::Response SteelUniaxial::evaluate(const State& committed, double s
     const auto consistency = [&](double increment) {
       const double beta = beta_of(increment);
       const double direction = beta >= 0.0 ? 1.0 : -1.0;
+      const HardeningResistance resistance = hardening_resistance(
+          terms_, isotropic_, youngs, committed.equivalent_plastic_strain, increment);
       ReturnMapEquation equation;
-      equation.residual =
-          std::abs(beta) - hardening_resistance(terms_, isotropic_, youngs,
-                                                committed.equivalent_plastic_strain, increment);
-      equation.slope = direction * beta_rate_of(increment) -
-                       hardening_resistance_slope(terms_, isotropic_, youngs,
-                                                  committed.equivalent_plastic_strain, increment);
+      equation.residual = std::abs(beta) - resistance.value;
+      equation.slope = direction * beta_rate_of(increment) - resistance.slope;
       return equation;
     };
     plastic_increment = solve_return_map(consistency, trial_function, youngs);

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <numbers>
 #include <random>
 
@@ -140,14 +141,12 @@ void expect_trials_in_axial_equilibrium(FiberLocalBeam& beam, const LocalVector&
   }
 }
 
-TEST(LocalBeam, AxialEquilibriumIsFoundWherePlainNewtonCyclesBetweenBranches) {
-  // A plate core in linear kinematic hardening (H = 3.3 % of E, UCSD G1: BRB_SOURCE_FACTS
-  // section 8), yielded in compression with weak-axis curvature, then driven to random
-  // trial deformations near its state. Its points cross between elastic and plastic
-  // branches at different strains, where Newton's method on the point strains can cycle
-  // (measured on G1: a period-4 cycle). Reference: equilibrium itself; every trial must
-  // give one axial force at every point (to the element's tolerance, 1e-10 of the force
-  // plus the force of a 1e-6 strain) and satisfy compatibility sum_k w_k e0_k = u / L0.
+/// A plate core of UCSD G1 (BRB_SOURCE_FACTS section 8: 203.2 x 38.1 mm, linear kinematic
+/// hardening H = 3.3 % of E), 210 mm long on 3 Gauss-Lobatto points, driven to tension at 2
+/// dy and back to compression at 1.6 dy with a growing bending wave (theta about z of the
+/// 38.1 mm depth: opposite end rotations, the curvature of a buckling half-wave), each stage
+/// committed. `deformation` returns the last stage's.
+FiberLocalBeam yielded_g1_plate(LocalVector& deformation) {
   material::SteelParameters steel;
   steel.youngs_modulus = 199948.0;
   steel.poissons_ratio = 0.3;
@@ -162,22 +161,93 @@ TEST(LocalBeam, AxialEquilibriumIsFoundWherePlainNewtonCyclesBetweenBranches) {
   }
   FiberLocalBeam beam(length, integration, std::move(sections));
   const double yield_strain = 255.106 / 199948.0;
-  LocalVector deformation = LocalVector::Zero();
+  deformation = LocalVector::Zero();
   LocalVector force;
   LocalMatrix tangent;
   std::string failure;
-  // tension to 2 dy, back to compression at yield with a bending wave (theta about z of the
-  // 38.1 mm depth: opposite end rotations, the curvature of a buckling half-wave)
   for (const auto& [strain, rotation] : {std::pair{2.0, 0.0}, std::pair{0.5, 0.004},
                                          std::pair{-1.0, 0.008}, std::pair{-1.6, 0.012}}) {
     deformation[0] = strain * yield_strain * length;
     deformation[3] = rotation;
     deformation[6] = -0.6 * rotation;
-    ASSERT_TRUE(beam.evaluate(deformation, force, tangent, failure)) << failure;
+    EXPECT_TRUE(beam.evaluate(deformation, force, tangent, failure)) << failure;
     beam.commit();
   }
-  expect_trials_in_axial_equilibrium(beam, deformation, 2.0 * yield_strain * length, 0.02,
+  return beam;
+}
+
+TEST(LocalBeam, AxialEquilibriumIsFoundWherePlainNewtonCyclesBetweenBranches) {
+  // G1's plate core, yielded in compression with weak-axis curvature, then driven to random
+  // trial deformations near its state. Its points cross between elastic and plastic
+  // branches at different strains, where Newton's method on the point strains can cycle
+  // (measured on G1: a period-4 cycle). Reference: equilibrium itself; every trial must
+  // give one axial force at every point (to the element's tolerance, 1e-10 of the force
+  // plus the force of a 1e-6 strain) and satisfy compatibility sum_k w_k e0_k = u / L0.
+  // The trials follow each other without a revert, so each starts from the previous one's
+  // strains moved by its tangent (the predictor), from up to 2 dy and 0.02 rad away.
+  LocalVector deformation;
+  FiberLocalBeam beam = yielded_g1_plate(deformation);
+  const double yield_strain = 255.106 / 199948.0;
+  expect_trials_in_axial_equilibrium(beam, deformation, 2.0 * yield_strain * beam.length(), 0.02,
                                      20261123);
+}
+
+TEST(LocalBeam, ThePredictedStartFindsTheColdStartsEquilibriumInFewerSweeps) {
+  // The iterates of a global Newton solve approach the step's end: here a further 0.5 dy of
+  // shortening and a deeper bending wave on G1's yielded plate, as d_i = d_c + (1 - 2^-i) D,
+  // i = 1..8. One beam starts each equal-force solve from the committed strains, the other
+  // from the last trial's moved by its tangent. Reference: the cold start's solution; the
+  // equilibrium is unique for this hardening plate, and both solves stop within the
+  // solve's tolerance of it (1e-10 of the force plus the force of a 1e-6 strain), so their
+  // axial forces differ by at most twice that; the end moments (the points' curvatures are
+  // the same, their axial strains differ by that force over the axial stiffness) to 1e-8 of
+  // their size (measured well below).
+  LocalVector committed;
+  FiberLocalBeam predicted = yielded_g1_plate(committed);
+  FiberLocalBeam cold = yielded_g1_plate(committed);
+  EXPECT_TRUE(predicted.axial_predictor()); // steel without damage: hardening fibers
+  cold.set_axial_predictor(false);
+  const double yield_strain = 255.106 / 199948.0;
+  LocalVector step = LocalVector::Zero();
+  step[0] = -0.5 * yield_strain * predicted.length();
+  step[3] = 0.002;
+  step[6] = -0.0012;
+  LocalVector force_predicted, force_cold;
+  LocalMatrix tangent_predicted, tangent_cold;
+  std::string failure;
+  int sweeps_predicted = 0, sweeps_cold = 0;
+  for (int iterate = 1; iterate <= 8; ++iterate) {
+    const LocalVector trial = committed + (1.0 - std::ldexp(1.0, -iterate)) * step;
+    ASSERT_TRUE(predicted.evaluate(trial, force_predicted, tangent_predicted, failure)) << failure;
+    ASSERT_TRUE(cold.evaluate(trial, force_cold, tangent_cold, failure)) << failure;
+    double force_scale = 0.0, stiffness_scale = 0.0;
+    for (const auto& section : cold.sections()) {
+      force_scale = std::max(force_scale, std::abs(section.last_response().force[0]));
+      stiffness_scale = std::max(stiffness_scale, std::abs(section.last_response().tangent(0, 0)));
+    }
+    EXPECT_NEAR(force_predicted[0], force_cold[0], 2e-10 * (force_scale + 1e-6 * stiffness_scale))
+        << "iterate " << iterate;
+    const double moment_scale = force_cold.tail<6>().cwiseAbs().maxCoeff();
+    EXPECT_LT((force_predicted - force_cold).tail<6>().cwiseAbs().maxCoeff(), 1e-8 * moment_scale)
+        << "iterate " << iterate;
+    sweeps_predicted += predicted.axial_sweeps();
+    sweeps_cold += cold.axial_sweeps();
+    std::cout << "[ predictor ] iterate " << iterate << ": sweeps " << predicted.axial_sweeps()
+              << " (cold " << cold.axial_sweeps() << "), N " << force_predicted[0] << " vs "
+              << force_cold[0] << "\n";
+    if (iterate >= 4) { // the iterates' change is a sixteenth of the step or less
+      EXPECT_EQ(predicted.axial_sweeps(), 1) << "iterate " << iterate;
+    }
+  }
+  EXPECT_LT(sweeps_predicted, sweeps_cold);
+
+  // A revert forgets the last trial: both start from the committed strains, the same solve
+  predicted.revert_to_committed();
+  cold.revert_to_committed();
+  ASSERT_TRUE(predicted.evaluate(committed + step, force_predicted, tangent_predicted, failure));
+  ASSERT_TRUE(cold.evaluate(committed + step, force_cold, tangent_cold, failure));
+  EXPECT_EQ(predicted.axial_sweeps(), cold.axial_sweeps());
+  EXPECT_TRUE(force_predicted == force_cold); // bitwise: the same arithmetic
 }
 
 TEST(LocalBeam, AxialEquilibriumIsFoundWhereNewtonThrowsASaturatedPointFar) {
@@ -265,6 +335,11 @@ TEST(LocalBeam, FallsBackToAUniformAxialStrainWhereASofteningSectionHasNoEqualFo
   // displacement-based beam's definition, e0_k = u / L0 at every point and N = sum_k w_k N_k
   // by virtual work, and its tangent by central differences.
   MortarLocalBeam beam = small_brb_mortar_beam();
+  // a softening section may have several equal-force states: the solve starts from the
+  // committed strains, never from a predicted one (corot_beam_3d.hpp)
+  EXPECT_FALSE(beam.axial_predictor());
+  beam.set_axial_predictor(true);
+  EXPECT_FALSE(beam.axial_predictor());
   LocalVector force;
   LocalMatrix tangent;
   std::string failure;

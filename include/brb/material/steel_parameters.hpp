@@ -63,8 +63,16 @@ struct IsotropicHardening {
   double saturation = 0.0;
   double rate = 0.0;
 
+  struct Response {
+    double radius = 0.0; ///< MPa
+    double slope = 0.0;  ///< MPa
+  };
+
   double radius(double p) const;
   double slope(double p) const;
+  /// radius(p) and slope(p) with one exponential (the return map needs both at every
+  /// iterate; the same numbers as the two calls).
+  Response response(double p) const;
   double stored_energy(double p) const;
 };
 
