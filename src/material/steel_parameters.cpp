@@ -87,10 +87,6 @@ double IsotropicHardening::radius(double p) const {
   return yield_stress + linear * p + saturation * (1.0 - std::exp(-rate * p));
 }
 
-double IsotropicHardening::slope(double p) const {
-  return linear + saturation * rate * std::exp(-rate * p);
-}
-
 IsotropicHardening::Response IsotropicHardening::response(double p) const {
   const double decay = std::exp(-rate * p);
   return {yield_stress + linear * p + saturation * (1.0 - decay),

@@ -69,9 +69,8 @@ struct IsotropicHardening {
   };
 
   double radius(double p) const;
-  double slope(double p) const;
-  /// radius(p) and slope(p) with one exponential (the return map needs both at every
-  /// iterate; the same numbers as the two calls).
+  /// radius(p) and its slope dR/dp, H_iso + Q b exp(-b p), from one exponential (the return
+  /// map needs both at every iterate).
   Response response(double p) const;
   double stored_energy(double p) const;
 };
