@@ -84,7 +84,7 @@ HardeningTerms HardeningTerms::from(const SteelParameters& parameters) {
 }
 
 double IsotropicHardening::radius(double p) const {
-  return yield_stress + linear * p + saturation * (1.0 - std::exp(-rate * p));
+  return response(p).radius;
 }
 
 IsotropicHardening::Response IsotropicHardening::response(double p) const {

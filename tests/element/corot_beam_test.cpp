@@ -106,6 +106,17 @@ TEST(CorotBeam3D, InelasticTangentMatchesFiniteDifferences) {
 
 using FiberLocalBeam = LocalBeam<section::FiberSection<material::SteelUniaxial>>;
 
+/// The equal-force solve's tolerance at the beam's last evaluation: 1e-10 of the largest
+/// point force plus the force of a 1e-6 strain (LocalBeam::axial_tolerance).
+double axial_force_tolerance(const FiberLocalBeam& beam) {
+  double force_scale = 0.0, stiffness_scale = 0.0;
+  for (const auto& section : beam.sections()) {
+    force_scale = std::max(force_scale, std::abs(section.last_response().force[0]));
+    stiffness_scale = std::max(stiffness_scale, std::abs(section.last_response().tangent(0, 0)));
+  }
+  return 1e-10 * (force_scale + 1e-6 * stiffness_scale);
+}
+
 /// Evaluates `beam` at 400 random trial deformations around `deformation` (axial change up to
 /// +-axial_range mm, end rotations up to +-rotation_range) and checks each against
 /// equilibrium itself: one axial force at every point (to the element's tolerance, 1e-10 of
@@ -125,17 +136,13 @@ void expect_trials_in_axial_equilibrium(FiberLocalBeam& beam, const LocalVector&
       trial_deformation[bend] += rotation_range * unit(generator);
     ASSERT_TRUE(beam.evaluate(trial_deformation, force, tangent, failure))
         << "trial " << trial << ": " << failure;
-    double mean_strain = 0.0, force_scale = 0.0, stiffness_scale = 0.0;
-    for (std::size_t k = 0; k < integration.weights.size(); ++k) {
+    double mean_strain = 0.0;
+    for (std::size_t k = 0; k < integration.weights.size(); ++k)
       mean_strain += integration.weights[k] * beam.axial_strains()[k];
-      force_scale = std::max(force_scale, std::abs(beam.sections()[k].last_response().force[0]));
-      stiffness_scale =
-          std::max(stiffness_scale, std::abs(beam.sections()[k].last_response().tangent(0, 0)));
-    }
     EXPECT_NEAR(mean_strain, trial_deformation[0] / beam.length(), 1e-12);
     for (std::size_t k = 0; k < integration.weights.size(); ++k) {
       EXPECT_NEAR(beam.sections()[k].last_response().force[0], force[0],
-                  1e-10 * (force_scale + 1e-6 * stiffness_scale))
+                  axial_force_tolerance(beam))
           << "trial " << trial << ", point " << k;
     }
   }
@@ -146,6 +153,8 @@ void expect_trials_in_axial_equilibrium(FiberLocalBeam& beam, const LocalVector&
 /// dy and back to compression at 1.6 dy with a growing bending wave (theta about z of the
 /// 38.1 mm depth: opposite end rotations, the curvature of a buckling half-wave), each stage
 /// committed. `deformation` returns the last stage's.
+constexpr double kG1YieldStrain = 255.106 / 199948.0; ///< fy / E of G1's plate
+
 FiberLocalBeam yielded_g1_plate(LocalVector& deformation) {
   material::SteelParameters steel;
   steel.youngs_modulus = 199948.0;
@@ -160,14 +169,13 @@ FiberLocalBeam yielded_g1_plate(LocalVector& deformation) {
                           material::SteelUniaxial(steel, integration.weights[k] * length), 76903.0);
   }
   FiberLocalBeam beam(length, integration, std::move(sections));
-  const double yield_strain = 255.106 / 199948.0;
   deformation = LocalVector::Zero();
   LocalVector force;
   LocalMatrix tangent;
   std::string failure;
   for (const auto& [strain, rotation] : {std::pair{2.0, 0.0}, std::pair{0.5, 0.004},
                                          std::pair{-1.0, 0.008}, std::pair{-1.6, 0.012}}) {
-    deformation[0] = strain * yield_strain * length;
+    deformation[0] = strain * kG1YieldStrain * length;
     deformation[3] = rotation;
     deformation[6] = -0.6 * rotation;
     EXPECT_TRUE(beam.evaluate(deformation, force, tangent, failure)) << failure;
@@ -187,8 +195,7 @@ TEST(LocalBeam, AxialEquilibriumIsFoundWherePlainNewtonCyclesBetweenBranches) {
   // strains moved by its tangent (the predictor), from up to 2 dy and 0.02 rad away.
   LocalVector deformation;
   FiberLocalBeam beam = yielded_g1_plate(deformation);
-  const double yield_strain = 255.106 / 199948.0;
-  expect_trials_in_axial_equilibrium(beam, deformation, 2.0 * yield_strain * beam.length(), 0.02,
+  expect_trials_in_axial_equilibrium(beam, deformation, 2.0 * kG1YieldStrain * beam.length(), 0.02,
                                      20261123);
 }
 
@@ -207,9 +214,8 @@ TEST(LocalBeam, ThePredictedStartFindsTheColdStartsEquilibriumInFewerSweeps) {
   FiberLocalBeam cold = yielded_g1_plate(committed);
   EXPECT_TRUE(predicted.axial_predictor()); // steel without damage: hardening fibers
   cold.set_axial_predictor(false);
-  const double yield_strain = 255.106 / 199948.0;
   LocalVector step = LocalVector::Zero();
-  step[0] = -0.5 * yield_strain * predicted.length();
+  step[0] = -0.5 * kG1YieldStrain * predicted.length();
   step[3] = 0.002;
   step[6] = -0.0012;
   LocalVector force_predicted, force_cold;
@@ -220,12 +226,7 @@ TEST(LocalBeam, ThePredictedStartFindsTheColdStartsEquilibriumInFewerSweeps) {
     const LocalVector trial = committed + (1.0 - std::ldexp(1.0, -iterate)) * step;
     ASSERT_TRUE(predicted.evaluate(trial, force_predicted, tangent_predicted, failure)) << failure;
     ASSERT_TRUE(cold.evaluate(trial, force_cold, tangent_cold, failure)) << failure;
-    double force_scale = 0.0, stiffness_scale = 0.0;
-    for (const auto& section : cold.sections()) {
-      force_scale = std::max(force_scale, std::abs(section.last_response().force[0]));
-      stiffness_scale = std::max(stiffness_scale, std::abs(section.last_response().tangent(0, 0)));
-    }
-    EXPECT_NEAR(force_predicted[0], force_cold[0], 2e-10 * (force_scale + 1e-6 * stiffness_scale))
+    EXPECT_NEAR(force_predicted[0], force_cold[0], 2.0 * axial_force_tolerance(cold))
         << "iterate " << iterate;
     const double moment_scale = force_cold.tail<6>().cwiseAbs().maxCoeff();
     EXPECT_LT((force_predicted - force_cold).tail<6>().cwiseAbs().maxCoeff(), 1e-8 * moment_scale)
