@@ -81,8 +81,10 @@ int run(int argc, char** argv) {
     test_force.push_back(record_force[k]);
     model_force.push_back(forces.values[i]);
   }
+  // beta on the cycles whose test peaks reach the yield force, as brb validate compares
+  const double yield_force = summary.at("yield_force").get<double>();
   const brb::validation::RecordComparison comparison = brb::validation::compare_with_record(
-      deformation, test_force, model_force, {threshold_dy * dy, energy_floor});
+      deformation, test_force, model_force, {threshold_dy * dy, energy_floor, yield_force});
 
   nlohmann::ordered_json out;
   out["run"] = run_directory.string();
@@ -95,6 +97,7 @@ int run(int argc, char** argv) {
   out["scored_cycles"] = comparison.scored_cycles;
   out["max_cycle_energy_error"] = comparison.max_cycle_energy_error;
   out["max_beta_difference"] = comparison.max_beta_difference;
+  out["beta_cycles"] = comparison.beta_cycles;
   // AISC 341 F4.2a from the scored cycles: beta = Pmax / Tmax and Tmax (omega = Tmax / Pysc),
   // the largest over the cycles, for the test and for the model at the same points.
   nlohmann::ordered_json per_cycle = nlohmann::ordered_json::array();

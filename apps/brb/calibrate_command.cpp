@@ -155,8 +155,11 @@ int run_calibrate_command(const CalibrateCommand& command, std::ostream& report)
       model_c.push_back(result.model_force[k]);
     }
   }
+  // beta on the cycles whose test peaks reach Py = fy A_c, as brb validate compares
+  const double yield_force = brace.steel.yield_stress * axial.core_area;
   const validation::RecordComparison comparison = validation::compare_with_record(
-      deformation_c, test_c, model_c, {command.reversal_threshold * dy, command.energy_floor});
+      deformation_c, test_c, model_c,
+      {command.reversal_threshold * dy, command.energy_floor, yield_force});
 
   Json output;
   output["steel"] = steel_json(result.steel);
@@ -175,6 +178,7 @@ int run_calibrate_command(const CalibrateCommand& command, std::ostream& report)
   calibration["scored_cycles"] = comparison.scored_cycles;
   calibration["max_cycle_energy_error"] = comparison.max_cycle_energy_error;
   calibration["max_beta_difference"] = comparison.max_beta_difference;
+  calibration["beta_cycles"] = comparison.beta_cycles;
   calibration["model"] = "fast axial model: yielding core (SteelUniaxial) in series with "
                          "elastic end zones; no buckling, contact or friction";
 
@@ -203,7 +207,8 @@ int run_calibrate_command(const CalibrateCommand& command, std::ostream& report)
          << result.error_tension << "\n"
          << "  cycles scored " << comparison.scored_cycles << ": max loop-energy error "
          << comparison.max_cycle_energy_error << ", max |beta difference| "
-         << comparison.max_beta_difference << "\n"
+         << comparison.max_beta_difference << " (" << comparison.beta_cycles
+         << " cycles with a test beta)\n"
          << "  steel: " << steel_json(result.steel).dump() << "\n"
          << "  wrote " << command.output.string() << "\n";
   return 0;

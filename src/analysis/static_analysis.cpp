@@ -193,6 +193,38 @@ void StaticAnalysis::number_equations() {
     }
   }
   pattern_analysed_ = false;
+  tangent_slots_valid_ = false;
+}
+
+bool StaticAnalysis::tangent_slots_match() const {
+  std::size_t next = 0;
+  for (const auto& element : model_.elements()) {
+    const auto nodes = element->nodes();
+    if (next + nodes.size() > slot_element_nodes_.size() ||
+        !std::equal(nodes.begin(), nodes.end(), slot_element_nodes_.begin() + next))
+      return false;
+    next += nodes.size();
+  }
+  return next == slot_element_nodes_.size();
+}
+
+void StaticAnalysis::build_tangent_slots() {
+  tangent_slots_.resize(triplets_.size());
+  const int* starts = tangent_.outerIndexPtr();
+  const int* rows = tangent_.innerIndexPtr();
+  for (std::size_t k = 0; k < triplets_.size(); ++k) {
+    const int column = triplets_[k].col();
+    // compressed column-major, rows sorted within a column
+    const int* found =
+        std::lower_bound(rows + starts[column], rows + starts[column + 1], triplets_[k].row());
+    tangent_slots_[k] = static_cast<int>(found - rows);
+  }
+  slot_element_nodes_.clear();
+  for (const auto& element : model_.elements()) {
+    const auto nodes = element->nodes();
+    slot_element_nodes_.insert(slot_element_nodes_.end(), nodes.begin(), nodes.end());
+  }
+  tangent_slots_valid_ = true;
 }
 
 bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
@@ -200,8 +232,13 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
   force_scale_ = 0.0;
   const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
   const auto prescribed_count = static_cast<Eigen::Index>(kDofPerNode * motion_nodes_.size());
+  // Add into the tangent's value slots where its pattern is known, else collect triplets.
+  const bool into_slots = with_tangent && tangent_slots_valid_ && tangent_slots_match();
+  std::size_t slot = 0;
   if (with_tangent) {
     triplets_.clear();
+    if (into_slots)
+      std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0);
     control_column_ = Eigen::VectorXd::Zero(free_count);
     if (prescribed_count > 0) {
       tangent_free_prescribed_ = Eigen::MatrixXd::Zero(free_count, prescribed_count);
@@ -237,7 +274,10 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
         const int prescribed_column = prescribed_index_[column];
         if (free_row >= 0) {
           if (free_column >= 0) {
-            triplets_.emplace_back(free_row, free_column, value);
+            if (into_slots)
+              tangent_.valuePtr()[tangent_slots_[slot++]] += value;
+            else
+              triplets_.emplace_back(free_row, free_column, value);
           } else {
             control_column_[free_row] += value * control_rate_[column];
             if (prescribed_column >= 0)
@@ -251,10 +291,11 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
       }
     }
   }
-  if (with_tangent) {
+  if (with_tangent && !into_slots) {
     const auto size = static_cast<Eigen::Index>(free_dofs_.size());
     tangent_.resize(size, size);
     tangent_.setFromTriplets(triplets_.begin(), triplets_.end());
+    build_tangent_slots();
   }
   return true;
 }
@@ -374,18 +415,23 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
     if (iteration == max_iterations)
       break;
 
-    Eigen::SparseMatrix<double> matrix = tangent_;
+    const Eigen::SparseMatrix<double>* matrix = &tangent_;
     if (viscosity != nullptr) {
-      // The viscosity's blocks may widen the pattern: analyse it for this matrix, and again
-      // for the next plain tangent.
-      matrix += *viscosity;
-      solver_.analyzePattern(matrix);
-      pattern_analysed_ = false;
-    } else if (!pattern_analysed_) {
-      solver_.analyzePattern(matrix);
+      regularised_tangent_ = tangent_ + *viscosity;
+      matrix = &regularised_tangent_;
+      // The viscosity's blocks may widen the pattern (the sum's pattern is the union, so the
+      // same count of entries is the same pattern): then analyse it for this matrix, and
+      // again for the next plain tangent.
+      if (regularised_tangent_.nonZeros() != tangent_.nonZeros()) {
+        solver_.analyzePattern(*matrix);
+        pattern_analysed_ = false;
+      }
+    }
+    if (!pattern_analysed_ && matrix->nonZeros() == tangent_.nonZeros()) {
+      solver_.analyzePattern(*matrix);
       pattern_analysed_ = true;
     }
-    solver_.factorize(matrix);
+    solver_.factorize(*matrix);
     if (solver_.info() != Eigen::Success) {
       attempt.failure = "singular tangent stiffness";
       return attempt;

@@ -399,8 +399,11 @@ RecordLookup compare_run_with_record(const RunData& run) {
   const std::string note = std::to_string(deformation.size()) + " reference points" +
                            (run.result.completed ? "" : " (the run stopped early)");
   try {
-    return {compare_with_record(deformation, test_force, model_force,
-                                {record.reversal_threshold, record.energy_floor_fraction}),
+    // beta is compared on cycles whose test peaks both reach the core's yield force
+    // (RecordComparisonOptions::beta_force_floor)
+    return {compare_with_record(
+                deformation, test_force, model_force,
+                {record.reversal_threshold, record.energy_floor_fraction, run.yield_force}),
             note};
   } catch (const std::invalid_argument& error) {
     return {std::nullopt, error.what()};
@@ -473,10 +476,35 @@ MetricValue evaluate_record_cycle_energy(const Json& metric, const RunData& run)
       [](const CycleComparison& c) { return c.energy_error(); });
 }
 
+/// Beta is compared only on scored cycles whose reference peaks both reach the yield force
+/// (CycleComparison::beta_compared): elsewhere there is no beta to match, and a record
+/// without such a cycle gives no value rather than a zero difference. A cycle named by
+/// "compared_cycle" is judged wherever the reference has a tension peak in it.
 MetricValue evaluate_record_beta(const Json& metric, const RunData& run) {
-  return record_cycle_value(
+  const RecordLookup lookup = compare_run_with_record(run);
+  const std::optional<std::size_t> k = compared_cycle(metric);
+  if (lookup.comparison) {
+    const RecordComparison& comparison = *lookup.comparison;
+    if (!k && comparison.scored_cycles > 0 && comparison.beta_cycles == 0) {
+      return {std::nullopt, lookup.note + ": no scored cycle of the reference reaches the "
+                                          "yield force in both directions (beta undefined)"};
+    }
+    if (k && *k <= comparison.cycles.size() &&
+        !(comparison.cycles[*k - 1].test_peaks.tension > 0.0)) {
+      return {std::nullopt, lookup.note + ": compared cycle " + std::to_string(*k) +
+                                " of the reference has no tension peak (beta undefined)"};
+    }
+  }
+  MetricValue value = record_cycle_value(
       metric, run, [](const RecordComparison& c) { return c.max_beta_difference; },
-      [](const CycleComparison& c) { return c.beta_difference(); });
+      [](CycleComparison c) {
+        c.beta_compared = true;
+        return c.beta_difference();
+      });
+  if (value.value && !k && lookup.comparison)
+    value.note += " (" + std::to_string(lookup.comparison->beta_cycles) +
+                  " reaching the yield force both ways)";
+  return value;
 }
 
 /// |model - reference| of an AISC 341 adjustment factor from a test (F4.2a, as `brb check`

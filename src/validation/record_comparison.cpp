@@ -122,7 +122,7 @@ double ExcursionComparison::peak_error() const {
 }
 
 double CycleComparison::beta_difference() const {
-  return scored ? std::abs(model_beta - test_beta) : 0.0;
+  return beta_compared ? std::abs(model_beta - test_beta) : 0.0;
 }
 
 RecordComparison compare_with_record(std::span<const double> deformation,
@@ -161,13 +161,20 @@ RecordComparison compare_with_record(std::span<const double> deformation,
         std::max(result.max_peak_tension_error, cycle.peak_tension_error());
     result.max_peak_compression_error =
         std::max(result.max_peak_compression_error, cycle.peak_compression_error());
-    // A model without positive force in the cycle has a NaN beta: the worst difference.
-    const double beta = cycle.beta_difference();
-    result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
-                                                  : std::max(result.max_beta_difference, beta);
-    // std::max keeps the first argument when the second is NaN
-    result.largest_test_beta = std::max(result.largest_test_beta, cycle.test_beta);
-    result.largest_model_beta = std::max(result.largest_model_beta, cycle.model_beta);
+    cycle.beta_compared = cycle.test_peaks.tension > 0.0 &&
+                          cycle.test_peaks.tension >= options.beta_force_floor &&
+                          cycle.test_peaks.compression >= options.beta_force_floor;
+    if (cycle.beta_compared) {
+      ++result.beta_cycles;
+      // A model without positive force where the test has some has a NaN beta: the worst
+      // difference.
+      const double beta = cycle.beta_difference();
+      result.max_beta_difference = std::isnan(beta) ? std::numeric_limits<double>::infinity()
+                                                    : std::max(result.max_beta_difference, beta);
+      // std::max keeps the first argument when the second is NaN
+      result.largest_test_beta = std::max(result.largest_test_beta, cycle.test_beta);
+      result.largest_model_beta = std::max(result.largest_model_beta, cycle.model_beta);
+    }
     result.largest_test_tension = std::max(result.largest_test_tension, cycle.test_peaks.tension);
     result.largest_model_tension =
         std::max(result.largest_model_tension, cycle.model_peaks.tension);

@@ -152,6 +152,36 @@ TEST(RecordKinds, CompareTheModelWithItsLabRecordAtTheRecordsPoints) {
   EXPECT_FALSE(find_metric_kind("record_nrms")->evaluate(json::object(), bare).value);
 }
 
+/// The value of `metric` (its "kind" names the kind) on `run`.
+MetricValue evaluate_on(const json& metric, const RunData& run) {
+  return find_metric_kind(metric.at("kind").get<std::string>())->evaluate(metric, run);
+}
+
+TEST(RecordKinds, BetaHasNoValueWhereNoReferenceCycleHasATensionPeak) {
+  // The three rectangles shifted down by 4 F (record and model alike): every force is
+  // compressive, so no cycle reaches Py in tension and none has a beta to match
+  // (record_comparison.hpp, beta_compared),
+  // while the loop energies (a shift adds nothing to a closed loop) are still compared.
+  auto [record, model] = record_and_scaled_model(three_rectangles(), 1.1, 1.1);
+  for (std::size_t k = 0; k < record.test_force.size(); ++k) {
+    record.test_force[k] -= 4.0 * kForce;
+    model.steps[k].force -= 4.0 * kForce;
+  }
+  const RunData run{model, kYieldDeform, kForce, 100.0, &record};
+  const MetricValue energy = evaluate_on({{"kind", "record_cycle_energy"}}, run);
+  ASSERT_TRUE(energy.value) << energy.note;
+  const MetricValue beta = evaluate_on({{"kind", "record_beta"}}, run);
+  EXPECT_FALSE(beta.value) << *beta.value;
+  EXPECT_NE(beta.note.find("no scored cycle of the reference reaches the yield force"),
+            std::string::npos)
+      << beta.note;
+  const MetricValue first = evaluate_on({{"kind", "record_beta"}, {"compared_cycle", 1}}, run);
+  EXPECT_FALSE(first.value);
+  EXPECT_NE(first.note.find("compared cycle 1 of the reference has no tension peak"),
+            std::string::npos)
+      << first.note;
+}
+
 TEST(RecordKinds, AiscAdjustmentFactorsAreTheLargestOverTheCycles) {
   // Reference (definition, AISC 341 F4.2a as `brb check` takes it): beta = the largest
   // Pmax / Tmax over the scored cycles, omega = the largest Tmax over Pysc. The record is the
@@ -160,11 +190,9 @@ TEST(RecordKinds, AiscAdjustmentFactorsAreTheLargestOverTheCycles) {
   // every cycle's beta is 1.2 times the record's (1.32 / 1.1) and the largest tension 2.2 F.
   const auto [record, model] = record_and_scaled_model(three_rectangles(), 1.1, 1.32);
   const RunData run{model, kYieldDeform, kForce, 100.0, &record};
-  const MetricValue beta =
-      find_metric_kind("record_largest_beta")->evaluate(json{{"kind", "record_largest_beta"}}, run);
+  const MetricValue beta = evaluate_on({{"kind", "record_largest_beta"}}, run);
   ASSERT_TRUE(beta.value) << beta.note;
-  const MetricValue per_cycle =
-      find_metric_kind("record_beta")->evaluate(json{{"kind", "record_beta"}}, run);
+  const MetricValue per_cycle = evaluate_on({{"kind", "record_beta"}}, run);
   ASSERT_TRUE(per_cycle.value) << per_cycle.note;
   // the largest record beta B: model 1.2 B, so the difference is 0.2 B, and the per-cycle
   // differences 0.2 beta_k are at most that

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -127,6 +128,53 @@ TEST(RecordComparison, NearlyElasticCyclesBelowTheEnergyFloorAreNotScored) {
   EXPECT_NEAR(comparison.cycles[1].test_energy, 0.0, 1e-12);
   EXPECT_EQ(comparison.scored_cycles, 1u);
   EXPECT_EQ(comparison.max_cycle_energy_error, 0.0);
+}
+
+TEST(RecordComparison, BetaIsComparedOnlyWhereTheTestHasATensionPeak) {
+  // A record that, after a full cycle (+1 / -1 mm, 10 N / -12 N), cycles about -0.75 mm in
+  // compression (a hold point's wiggle). Segmented from maximum to maximum (the last point
+  // makes -0.5 mm a maximum), its third cycle runs -0.5 -> -1 -> -0.5 mm with the force
+  // between -2 and -12 N: it has loop energy (hand computed, trapezoidal: 0.7 + 4.8 - 0.7 -
+  // 0.8 = 4.0 N mm, above 5 % of the first cycle's) but no tension peak, and beta = Pmax /
+  // Tmax is undefined for it.
+  const std::vector<double> deformation{0.0,  0.1,  1.0,  0.78, -1.0, -0.78, 1.0,  0.78,
+                                        -1.0, -0.9, -0.5, -0.6, -1.0, -0.9,  -0.5, -0.6};
+  const std::vector<double> test_force{0.0,   10.0, 10.0, -12.0, -12.0, 10.0, 10.0, -12.0,
+                                       -12.0, -2.0, -2.0, -12.0, -12.0, -2.0, -2.0, -12.0};
+  std::vector<double> scaled_force;
+  for (const double f : test_force)
+    scaled_force.push_back(0.9 * f);
+  const RecordComparison comparison =
+      compare_with_record(deformation, test_force, scaled_force, {0.05, 0.05});
+  ASSERT_EQ(comparison.cycles.size(), 3u);
+  EXPECT_EQ(comparison.scored_cycles, 3u);
+  EXPECT_NEAR(comparison.cycles[2].test_energy, 4.0, 1e-12);
+  EXPECT_TRUE(comparison.cycles[0].beta_compared);
+  EXPECT_TRUE(comparison.cycles[1].beta_compared);
+  EXPECT_FALSE(comparison.cycles[2].beta_compared);
+  EXPECT_EQ(comparison.beta_cycles, 2u);
+  // scaling keeps beta: no difference on the two compared cycles (the third was infinite)
+  EXPECT_NEAR(comparison.max_beta_difference, 0.0, 1e-12);
+  EXPECT_NEAR(comparison.max_cycle_energy_error, 0.1, 1e-12); // energy is still scored
+
+  // With a beta force floor (the specimens pass Py) a cycle's beta is compared only where
+  // both test peaks reach it: 10 N tension and 12 N compression reach 10 N, not 10.5 N.
+  RecordComparisonOptions at_yield{0.05, 0.05, 10.0};
+  EXPECT_EQ(compare_with_record(deformation, test_force, scaled_force, at_yield).beta_cycles, 2u);
+  at_yield.beta_force_floor = 10.5;
+  const RecordComparison above =
+      compare_with_record(deformation, test_force, scaled_force, at_yield);
+  EXPECT_EQ(above.beta_cycles, 0u);
+  EXPECT_EQ(above.scored_cycles, 3u);
+  EXPECT_EQ(above.largest_test_beta, 0.0); // AISC's beta only from yield-level cycles
+
+  // A model without tension in a cycle where the test has some is the worst difference.
+  std::vector<double> no_tension = scaled_force;
+  for (std::size_t i = 2; i <= 6; ++i)
+    no_tension[i] = std::min(no_tension[i], -1.0);
+  const RecordComparison without =
+      compare_with_record(deformation, test_force, no_tension, {0.05, 0.05});
+  EXPECT_TRUE(std::isinf(without.max_beta_difference));
 }
 
 TEST(RecordComparison, ExcursionsOfAHalfCycleProtocolAreScoredWithoutAClosedCycle) {

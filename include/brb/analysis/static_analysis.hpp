@@ -299,6 +299,10 @@ private:
   bool kinematic_control() const { return displacement_control_ || !motion_nodes_.empty(); }
   /// Assembles internal forces (all DOF) and the free-free tangent at the trial state.
   bool assemble(bool with_tangent, std::string& failure);
+  /// Whether the elements still have the nodes the tangent's value slots were built for.
+  bool tangent_slots_match() const;
+  /// The value slot of every triplets_ entry in the compressed tangent_.
+  void build_tangent_slots();
   Eigen::VectorXd free_residual(double control) const;
   void apply_free_increment(const Eigen::VectorXd& increment, double scale);
   void set_control_value(double value);
@@ -438,6 +442,14 @@ private:
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> tangent_; // free x free
   Eigen::VectorXd control_column_;      // d F_free / d control
+  // The tangent's pattern is fixed by the elements' nodes: the first assembly builds it from
+  // triplets, and later ones add each free x free entry straight into its value slot (in
+  // the same order, so the sums are the same). The slot of every entry in element order,
+  // and the elements' nodes it was built for (a change rebuilds it).
+  std::vector<int> tangent_slots_;
+  std::vector<int> slot_element_nodes_;
+  bool tangent_slots_valid_ = false;
+  Eigen::SparseMatrix<double> regularised_tangent_; // tangent + viscosity (pseudo-time steps)
   // d (prescribed DOF) / d control, all DOF (zero but at the controlled ones)
   Eigen::VectorXd control_rate_;
   // prescribed motion: nodes, their configuration at control 0, targets, rotation vectors

@@ -73,6 +73,13 @@ struct RecordComparisonOptions {
   /// small difference of large numbers and is dominated by measurement noise, and whose
   /// beta compares two elastic forces.
   double energy_floor_fraction = 0.05;
+  /// N (>= 0): a scored cycle's beta is compared only where the test's tension and
+  /// compression peaks both reach this force; the specimens use the core's yield force
+  /// Py = fy A_c. A cycle of an irregular record segmented from maximum to maximum can start
+  /// at a maximum the test barely loaded in tension (PC500: 0.27 MN against Py = 1.49 MN,
+  /// test beta 10.6): its beta divides by an elastic force and says nothing about the
+  /// compression overstrength that beta measures (AISC 341 K3: at yield-level cycles).
+  double beta_force_floor = 0.0;
 };
 
 struct CycleComparison {
@@ -86,6 +93,13 @@ struct CycleComparison {
   bool scored = false;    ///< test energy at or above the floor
   /// |model - test| / test energy (scored cycles only; 0 otherwise).
   double energy_error() const;
+  /// Whether the cycle's beta is compared (compare_with_record): scored, the test has a
+  /// tension peak in it (beta = Pmax / Tmax is undefined without one: e.g. a hold point's
+  /// wiggle in compression segmented from maximum to maximum) and both its peaks reach the
+  /// options' beta_force_floor.
+  bool beta_compared = false;
+  /// |model - test| beta of a compared cycle (0 otherwise; NaN when the model has no tension
+  /// peak where the test has one).
   double beta_difference() const;
   /// |model - test| / test peak force in tension and in compression (scored cycles only; 0
   /// otherwise; infinite when the test cycle has no peak in that direction).
@@ -113,16 +127,18 @@ struct RecordComparison {
   std::size_t scored_cycles = 0;
   /// Largest relative loop-energy error over the scored cycles (0 without one).
   double max_cycle_energy_error = 0.0;
-  /// Largest |beta_model - beta_test| over the scored cycles (0 without one).
+  /// Largest |beta_model - beta_test| over the beta-compared cycles (0 without one; infinite
+  /// when the model has no tension peak in one of them).
   double max_beta_difference = 0.0;
+  std::size_t beta_cycles = 0; ///< cycles whose beta is compared (CycleComparison::beta_compared)
   /// Largest relative error of the cycle's peak tension and peak compression over the scored
   /// cycles (0 without one).
   double max_peak_tension_error = 0.0;
   double max_peak_compression_error = 0.0;
   /// AISC 341's adjustment factors from a test (F4.2a, as `brb check` takes them): the
-  /// largest beta = Pmax / Tmax and the largest Tmax (omega = Tmax / Pysc) over the scored
-  /// cycles, for the test and for the model at the same points (0 without a scored cycle; a
-  /// cycle without tension, whose beta is undefined, does not count).
+  /// largest beta = Pmax / Tmax over the beta-compared cycles and the largest Tmax (omega =
+  /// Tmax / Pysc) over the scored cycles, for the test and for the model at the same points
+  /// (0 without such a cycle).
   double largest_test_beta = 0.0;
   double largest_model_beta = 0.0;
   double largest_test_tension = 0.0;  ///< N
