@@ -431,11 +431,11 @@ void check_compared_cycle(const io::JsonValue& metric) {
 }
 
 /// The worst scored cycle's value (`worst`), or the value of the one cycle asked for
-/// (`of_cycle`, whether scored or not: a cycle named explicitly is judged), with a note.
+/// (`of_cycle`, whether scored or not: a cycle named explicitly is judged), with a note;
+/// `lookup` is compare_run_with_record of the run.
 template <typename Worst, typename OfCycle>
-MetricValue record_cycle_value(const Json& metric, const RunData& run, Worst worst,
+MetricValue record_cycle_value(const Json& metric, const RecordLookup& lookup, Worst worst,
                                OfCycle of_cycle) {
-  const RecordLookup lookup = compare_run_with_record(run);
   if (!lookup.comparison)
     return {std::nullopt, lookup.note};
   const RecordComparison& comparison = *lookup.comparison;
@@ -472,7 +472,8 @@ void check_record_cycle_kind(const io::JsonValue& metric) {
 
 MetricValue evaluate_record_cycle_energy(const Json& metric, const RunData& run) {
   return record_cycle_value(
-      metric, run, [](const RecordComparison& c) { return c.max_cycle_energy_error; },
+      metric, compare_run_with_record(run),
+      [](const RecordComparison& c) { return c.max_cycle_energy_error; },
       [](const CycleComparison& c) { return c.energy_error(); });
 }
 
@@ -496,7 +497,7 @@ MetricValue evaluate_record_beta(const Json& metric, const RunData& run) {
     }
   }
   MetricValue value = record_cycle_value(
-      metric, run, [](const RecordComparison& c) { return c.max_beta_difference; },
+      metric, lookup, [](const RecordComparison& c) { return c.max_beta_difference; },
       [](CycleComparison c) {
         c.beta_compared = true;
         return c.beta_difference();
@@ -566,7 +567,7 @@ MetricValue evaluate_record_peak_force(const Json& metric, const RunData& run) {
   const bool tension = direction != "compression";
   const bool compression = direction != "tension";
   return record_cycle_value(
-      metric, run,
+      metric, compare_run_with_record(run),
       [&](const RecordComparison& c) {
         return std::max(tension ? c.max_peak_tension_error : 0.0,
                         compression ? c.max_peak_compression_error : 0.0);
