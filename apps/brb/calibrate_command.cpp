@@ -208,7 +208,7 @@ int run_calibrate_command(const CalibrateCommand& command, std::ostream& report)
          << "  cycles scored " << comparison.scored_cycles << ": max loop-energy error "
          << comparison.max_cycle_energy_error << ", max |beta difference| "
          << comparison.max_beta_difference << " (" << comparison.beta_cycles
-         << " cycles with a test beta)\n"
+         << " cycles whose test peaks reach Py both ways)\n"
          << "  steel: " << steel_json(result.steel).dump() << "\n"
          << "  wrote " << command.output.string() << "\n";
   return 0;
