@@ -386,6 +386,8 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
     return r;
   };
   int polished = 0;
+  double start_residual = 0.0;
+  double smallest_residual = 0.0;
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
     if (!assembled && !assemble(true, attempt.failure))
       return attempt;
@@ -414,6 +416,23 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
     }
     if (iteration == max_iterations)
       break;
+
+    // Stagnation cut-off (NewtonSettings::stagnation_iterations): a plain call whose residual
+    // has not fallen to a fraction of its start in that many iterations is on a plateau
+    // (a snap-through ahead) and gives the step to the fallbacks.
+    const double residual_norm = residual.norm();
+    if (iteration == 0)
+      start_residual = smallest_residual = residual_norm;
+    smallest_residual = std::min(smallest_residual, residual_norm);
+    if (viscosity == nullptr && !polishing && settings_.stagnation_iterations > 0 &&
+        iteration >= settings_.stagnation_iterations &&
+        smallest_residual > settings_.stagnation_ratio * start_residual) {
+      attempt.failure = "Newton-Raphson stagnated: residual norm " + readable(residual_norm) +
+                        " after " + std::to_string(iteration) + " iterations, from " +
+                        readable(start_residual);
+      attempt.iterations = iteration;
+      return attempt;
+    }
 
     const Eigen::SparseMatrix<double>* matrix = &tangent_;
     if (viscosity != nullptr) {

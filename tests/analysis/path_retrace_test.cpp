@@ -301,6 +301,7 @@ TEST(PathRetrace, ARetraceThatWouldPassALimitPointByNewtonIsRefused) {
   NewtonSettings patient; // Newton free to get across: no line search, many iterations
   patient.max_iterations = 300;
   patient.line_search = false;
+  patient.stagnation_iterations = 0;
   StaticAnalysis analysis(truss->model, patient);
   analysis.use_prescribed_motion({truss->driver});
   const auto driver_at = [&](double y) {

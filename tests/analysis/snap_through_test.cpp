@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 namespace brb::analysis {
 namespace {
 
@@ -36,6 +39,87 @@ TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   EXPECT_GT(energy.released_in_jumps, 0.01 * energy.external_work);
   EXPECT_NEAR(energy.dissipated, 0.0, 1e-9 * energy.external_work);
   EXPECT_LT(energy.relative_error(), 1e-4); // trapezoidal work over smooth steps
+}
+
+/// Drives the shallow truss's spring down in 120 steps of 5 mm with `settings`;
+/// returns the Newton iterations of all steps and the apex's final deflection.
+struct DrivenTruss {
+  int iterations = 0;
+  int jumps = 0;
+  double apex_deflection = 0.0;
+  double released = 0.0;
+};
+
+DrivenTruss drive_truss_down(const NewtonSettings& settings) {
+  const auto truss = test::shallow_truss();
+  model::Model& model = truss->model;
+  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
+    model.fix(truss->driver, dof);
+  StaticAnalysis analysis(model, settings);
+  analysis.use_displacement_control(truss->driver, model::uy);
+  DrivenTruss result;
+  for (int step = 1; step <= 120; ++step) {
+    const StepReport report = analysis.step_to(-5.0 * step);
+    EXPECT_TRUE(report.converged) << "step " << step << ": " << report.failure;
+    result.iterations += report.iterations;
+    result.jumps += report.used_regularised_newton;
+  }
+  result.apex_deflection = analysis.displacement(truss->apex, model::uy);
+  result.released = analysis.energy().released_in_jumps;
+  return result;
+}
+
+TEST(SnapThrough, StagnationCutOffGivesUpOnThePlateauSoonerAndLandsOnTheSameBranch) {
+  // NewtonSettings::stagnation_iterations: at the limit point plain Newton's residual
+  // plateaus (no equilibrium near the predictor); the cut-off hands the step to the fallbacks
+  // after 15 iterations instead of 30. Reference: the same run without the cut-off. The
+  // truss is elastic, so after the jump both runs must reach the same inverted equilibrium
+  // (the equilibrium for a given driver position on the inverted branch is unique), and
+  // release the same energy in the jump (the drop of stored energy between the two branches).
+  NewtonSettings without;
+  without.stagnation_iterations = 0;
+  const DrivenTruss reference = drive_truss_down(without);
+  const DrivenTruss with_cut_off = drive_truss_down(NewtonSettings{});
+  EXPECT_GE(reference.jumps, 1);
+  EXPECT_GE(with_cut_off.jumps, 1);
+  EXPECT_LT(with_cut_off.iterations, reference.iterations);
+  EXPECT_NEAR(with_cut_off.apex_deflection, reference.apex_deflection,
+              1e-6 * std::abs(reference.apex_deflection));
+  EXPECT_NEAR(with_cut_off.released, reference.released, 0.02 * reference.released);
+}
+
+/// The first step over the limit point that fails, with no halving and no pseudo-time step
+/// allowed (so the step's iterations are those of its one plain Newton call).
+StepReport first_failed_step(const NewtonSettings& cut_off) {
+  const auto truss = test::shallow_truss();
+  model::Model& model = truss->model;
+  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
+    model.fix(truss->driver, dof);
+  NewtonSettings settings = cut_off;
+  settings.max_halvings = 0;
+  settings.fallback_iterations = 0;
+  StaticAnalysis analysis(model, settings);
+  analysis.use_displacement_control(truss->driver, model::uy);
+  for (int step = 1; step <= 120; ++step) {
+    const StepReport report = analysis.step_to(-5.0 * step);
+    if (!report.converged)
+      return report;
+  }
+  return {};
+}
+
+TEST(SnapThrough, StagnatedNewtonStopsAtTheCutOffIterationInsteadOfTheLast) {
+  // At the limit point the residual plateaus above 0.1 of its start: the default cut-off
+  // stops the call at iteration 15; without it, the call runs all 30 iterations.
+  const StepReport cut = first_failed_step(NewtonSettings{});
+  ASSERT_FALSE(cut.converged);
+  ASSERT_FALSE(cut.failure.empty()) << "the limit point was passed by plain Newton";
+  EXPECT_EQ(cut.iterations, NewtonSettings{}.stagnation_iterations);
+  NewtonSettings without;
+  without.stagnation_iterations = 0;
+  const StepReport full = first_failed_step(without);
+  ASSERT_FALSE(full.failure.empty());
+  EXPECT_EQ(full.iterations, without.max_iterations);
 }
 
 } // namespace
