@@ -473,7 +473,7 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
     // need to (the `passes` check's brace jumped to another mode, a 1.5 % force drop).
     const std::vector<NodeConfiguration> start = trial_;
     const Eigen::VectorXd start_moved = moved_;
-    const double start_norm = residual.norm();
+    const double start_norm = residual_norm;
     const auto take_step = [&](double step, std::string& failure) {
       trial_ = start;
       apply_free_increment(increment, step);

@@ -7,10 +7,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace brb::analysis {
 namespace {
+
+/// The shallow truss with its driver free along y alone (driven by displacement control).
+std::unique_ptr<test::ShallowTruss> truss_driven_along_y() {
+  auto truss = test::shallow_truss();
+  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
+    truss->model.fix(truss->driver, dof);
+  return truss;
+}
 
 TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   // Reference: a shallow two-bar (von Mises) truss, half-span 1000 mm, rise 50 mm, loaded at
@@ -20,11 +29,9 @@ TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   // Everything is elastic, so the work done equals the stored energy plus what the jump
   // released (the drop of stored energy across the jump, absorbed by the pseudo-viscosity
   // that carries it).
-  const auto truss = test::shallow_truss();
+  const auto truss = truss_driven_along_y();
   model::Model& model = truss->model;
   const int apex = truss->apex, driver = truss->driver;
-  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
-    model.fix(driver, dof);
   StaticAnalysis analysis(model);
   analysis.use_displacement_control(driver, model::uy);
   int jumps = 0;
@@ -41,8 +48,7 @@ TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   EXPECT_LT(energy.relative_error(), 1e-4); // trapezoidal work over smooth steps
 }
 
-/// Drives the shallow truss's spring down in 120 steps of 5 mm with `settings`;
-/// returns the Newton iterations of all steps and the apex's final deflection.
+/// What drive_truss_down measured.
 struct DrivenTruss {
   int iterations = 0;
   int jumps = 0;
@@ -50,11 +56,11 @@ struct DrivenTruss {
   double released = 0.0;
 };
 
+/// Drives the shallow truss's spring down in 120 steps of 5 mm with `settings`: the Newton
+/// iterations and jumps of all steps, the apex's final deflection and the energy released.
 DrivenTruss drive_truss_down(const NewtonSettings& settings) {
-  const auto truss = test::shallow_truss();
+  const auto truss = truss_driven_along_y();
   model::Model& model = truss->model;
-  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
-    model.fix(truss->driver, dof);
   StaticAnalysis analysis(model, settings);
   analysis.use_displacement_control(truss->driver, model::uy);
   DrivenTruss result;
@@ -91,10 +97,8 @@ TEST(SnapThrough, StagnationCutOffGivesUpOnThePlateauSoonerAndLandsOnTheSameBran
 /// The first step over the limit point that fails, with no halving and no pseudo-time step
 /// allowed (so the step's iterations are those of its one plain Newton call).
 StepReport first_failed_step(const NewtonSettings& cut_off) {
-  const auto truss = test::shallow_truss();
+  const auto truss = truss_driven_along_y();
   model::Model& model = truss->model;
-  for (const auto dof : {model::ux, model::uz, model::rx, model::ry, model::rz})
-    model.fix(truss->driver, dof);
   NewtonSettings settings = cut_off;
   settings.max_halvings = 0;
   settings.fallback_iterations = 0;
