@@ -1,6 +1,7 @@
 #include "cyclic_command.hpp"
 
 #include "checked_option.hpp"
+#include "checkpoint_option.hpp"
 #include "output_directory.hpp"
 #include "progress_line.hpp"
 
@@ -239,6 +240,14 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
                       "Print a progress line on stderr at most every SECONDS of wall time (0: "
                       "after every step) and after the last step: step k of N, deformation, "
                       "force, substeps so far, elapsed time");
+  cyclic
+      ->add_option("--checkpoint", command.checkpoint,
+                   "Checkpoint file of a long run: written after a converged step at most "
+                   "every --checkpoint-every seconds; a run that finds it (written for the same "
+                   "brace and protocol files and settings) takes up from its step, to the same "
+                   "results; removed once the outputs are written")
+      ->type_name("FILE");
+  add_checkpoint_interval_option(*cyclic, command.checkpoint_interval);
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
@@ -276,9 +285,31 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   if (command.progress_interval)
     progress = ProgressLine(notes, "brb: cyclic: ", protocol.deformation.size() - 1,
                             *command.progress_interval);
+  std::optional<analysis::CyclicCheckpoint> checkpoint;
+  if (command.checkpoint) {
+    // the run key: the input files' bytes and every setting that moves the path
+    std::ostringstream key;
+    key << std::setprecision(17) << "cyclic brace " << io::file_fingerprint(command.brace)
+        << " protocol " << io::file_fingerprint(command.protocol) << " max_step "
+        << default_max_step << " energy_tolerance " << settings.energy_tolerance
+        << " balance_tolerance " << settings.balance_tolerance << " histories " << command.histories
+        << " shapes";
+    for (const int step : command.shape_steps.value_or(std::vector<int>{}))
+      key << " " << step;
+    checkpoint =
+        analysis::CyclicCheckpoint{*command.checkpoint, command.checkpoint_interval, key.str(),
+                                   [&notes, &command](const analysis::ResumedRun& resumed) {
+                                     notes << "brb: cyclic: taking up the run from the checkpoint "
+                                           << command.checkpoint->string() << " at step "
+                                           << resumed.steps << " (" << std::fixed
+                                           << std::setprecision(1) << resumed.elapsed_seconds
+                                           << " s of earlier runs)\n"
+                                           << std::defaultfloat;
+                                   }};
+  }
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
       brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings,
-      command.histories, command.shape_steps, std::move(progress));
+      command.histories, command.shape_steps, std::move(progress), checkpoint);
 
   // Written also when the analysis stopped early: what was computed is a result too.
   OutputFiles files{command.output_directory / kHysteresisFile,
@@ -298,6 +329,9 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
       files.summary,
       io::cyclic_summary_json(name, brace.yield_deformation, brace.yield_force, result).dump(2) +
           "\n");
+
+  if (checkpoint) // the outputs hold the whole run now
+    fs::remove(checkpoint->file);
 
   print_report(report, command, name, brace, protocol, result, files);
   if (!result.completed) {

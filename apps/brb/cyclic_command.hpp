@@ -35,6 +35,11 @@ struct CyclicCommand {
   /// Print a progress line on the notes stream at most every this many seconds of wall time
   /// (0: after every step) and after the last step; none: no progress lines.
   std::optional<double> progress_interval;
+  /// `--checkpoint FILE`: the run takes up from FILE when it exists (written for the same
+  /// brace and protocol files and settings), writes it at most every checkpoint_interval
+  /// seconds of wall time, and removes it once the outputs are written.
+  std::optional<std::filesystem::path> checkpoint;
+  double checkpoint_interval = 600.0;
 };
 
 /// The brace's name in the outputs: its "name", or the brace file's name without extension.

@@ -3,6 +3,7 @@
 #include "bench_pareto_command.hpp"
 #include "bench_skips_command.hpp"
 #include "bench_stress_command.hpp"
+#include "brb/io/state_archive.hpp"
 #include "calibrate_command.hpp"
 #include "check_command.hpp"
 #include "cyclic_command.hpp"
@@ -104,6 +105,9 @@ int main(int argc, char** argv) {
     if (bench_pareto->parsed())
       return brb::cli::run_bench_pareto_command(bench_pareto_command, std::cout, std::cerr);
   } catch (const brb::io::InputError& error) {
+    std::cerr << "brb: error: " << error.what() << "\n";
+    return kInvalidInput;
+  } catch (const brb::io::CheckpointMismatch& error) {
     std::cerr << "brb: error: " << error.what() << "\n";
     return kInvalidInput;
   } catch (const std::exception& error) {

@@ -1,5 +1,6 @@
 #include "validate_command.hpp"
 
+#include "checkpoint_option.hpp"
 #include "progress_line.hpp"
 
 #include "brb/io/atomic_file.hpp"
@@ -97,7 +98,11 @@ void print_run(std::ostream& out, const RunOutcome& run) {
     failed += check.status == CheckStatus::fail ? 1 : 0;
   }
   out << (run.completed ? "completed" : "STOPPED EARLY") << ", " << run.steps << "/"
-      << run.planned_steps << " steps, " << seconds(run.run_seconds) << ", energy-balance error "
+      << run.planned_steps << " steps"
+      << (run.resumed_from_step > 0 ? " (taken up from a checkpoint at step " +
+                                          std::to_string(run.resumed_from_step) + ")"
+                                    : std::string())
+      << ", " << seconds(run.run_seconds) << ", energy-balance error "
       << significant(run.energy_balance_error, 3) << "; " << passed << " passed, " << failed
       << " failed\n";
   for (const CheckResult& check : run.checks) {
@@ -134,8 +139,8 @@ struct Job {
 /// their steps converge: ProgressLine). The first exception a run throws is rethrown
 /// once every thread has stopped.
 std::vector<RunOutcome> run_jobs(const std::vector<PreparedSpecimen>& specimens,
-                                 const std::vector<Job>& jobs, int threads, std::ostream& out,
-                                 std::optional<double> progress_interval) {
+                                 const std::vector<Job>& jobs, std::ostream& out,
+                                 const ValidateCommand& command) {
   std::vector<RunOutcome> outcomes(jobs.size());
   std::atomic<std::size_t> next{0};
   std::mutex output;
@@ -144,26 +149,34 @@ std::vector<RunOutcome> run_jobs(const std::vector<PreparedSpecimen>& specimens,
     for (std::size_t index = next++; index < jobs.size(); index = next++) {
       const Job& job = jobs[index];
       const PreparedSpecimen& specimen = specimens[job.specimen];
+      std::optional<fs::path> checkpoint;
+      if (command.checkpoint_directory)
+        checkpoint = *command.checkpoint_directory /
+                     (specimen.specimen.id + "_x" + std::to_string(job.refinement) + ".checkpoint");
       {
         const std::lock_guard lock(output);
         if (failure)
           return;
         out << specimen.specimen.id << " x" << job.refinement << ": running ("
             << specimen.brace.core_elements * job.refinement << " core elements, "
-            << specimen.protocol_points - 1 << " steps)\n"
+            << specimen.protocol_points - 1 << " steps"
+            << (checkpoint && fs::exists(*checkpoint)
+                    ? ", checkpoint " + checkpoint->string() + " found"
+                    : std::string())
+            << ")\n"
             << std::flush;
       }
       try {
         analysis::StepObserver progress;
-        if (progress_interval) {
+        if (command.progress_interval) {
           const std::string label =
               specimen.specimen.id + " x" + std::to_string(job.refinement) + ": ";
-          progress =
-              ProgressLine(out, label, specimen.protocol_points - 1, *progress_interval, &output);
+          progress = ProgressLine(out, label, specimen.protocol_points - 1,
+                                  *command.progress_interval, &output);
         }
         outcomes[index] =
             run_specimen(specimen, job.refinement, run_directory(specimen.specimen, job.refinement),
-                         std::move(progress));
+                         std::move(progress), checkpoint, command.checkpoint_interval);
         const std::lock_guard lock(output);
         out << specimen.specimen.id << " x" << job.refinement << ": ";
         print_run(out, outcomes[index]);
@@ -177,7 +190,8 @@ std::vector<RunOutcome> run_jobs(const std::vector<PreparedSpecimen>& specimens,
     }
   };
   std::vector<std::thread> workers;
-  const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(threads), jobs.size());
+  const std::size_t count =
+      std::min<std::size_t>(static_cast<std::size_t>(command.jobs), jobs.size());
   for (std::size_t i = 1; i < count; ++i)
     workers.emplace_back(work);
   work();
@@ -238,6 +252,15 @@ CLI::App* add_validate_command(CLI::App& app, ValidateCommand& command) {
                       "Print a progress line of every run (\"ID xK: step k of N ...\", with "
                       "the lines of runs starting and finishing) at most every SECONDS of wall "
                       "time (0: after every step) and after its last step");
+  validate
+      ->add_option("--checkpoint-dir", command.checkpoint_directory,
+                   "Keep a checkpoint of every run in DIR (<id>_x<k>.checkpoint, created if "
+                   "missing): written after a converged step at most every --checkpoint-every "
+                   "seconds; a run that finds its file (written for the same specimen files "
+                   "and refinement) takes up from its step, to the same results; removed once "
+                   "the run's outputs are written")
+      ->type_name("DIR");
+  add_checkpoint_interval_option(*validate, command.checkpoint_interval);
   validate->footer(
       "Every run keeps its hysteresis.csv and summary.json in DIR/<id>/out/x<k>/.\n"
       "Exit status: 0 every check passed, 1 a check failed (or a run failed), 2 invalid input "
@@ -273,8 +296,9 @@ int run_validate_command(const ValidateCommand& command, std::ostream& out) {
          command.refinements.empty() ? specimen.refinements : command.refinements)
       jobs.push_back(Job{index, refinement});
   }
-  std::vector<RunOutcome> outcomes =
-      run_jobs(prepared, jobs, command.jobs, out, command.progress_interval);
+  if (command.checkpoint_directory)
+    fs::create_directories(*command.checkpoint_directory);
+  std::vector<RunOutcome> outcomes = run_jobs(prepared, jobs, out, command);
 
   ValidationReport report;
   report.validation_directory = command.directory.string();

@@ -20,6 +20,11 @@ struct ValidateCommand {
   int jobs = 1; ///< runs at a time (each run is independent; results do not depend on it)
   /// Seconds between the progress lines of each run (none when empty; ProgressLine)
   std::optional<double> progress_interval;
+  /// `--checkpoint-dir DIR`: each run keeps a checkpoint DIR/<id>_x<k>.checkpoint, takes up
+  /// from it when it exists, writes it at most every checkpoint_interval seconds of wall time
+  /// and removes it once its outputs are written (validation/README: the x4 lab records).
+  std::optional<std::filesystem::path> checkpoint_directory;
+  double checkpoint_interval = 600.0;
 };
 
 /// Registers the sub-command and its options (stored into `command` when parsed).

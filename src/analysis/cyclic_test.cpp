@@ -1,8 +1,12 @@
 #include "brb/analysis/cyclic_test.hpp"
+#include "brb/io/atomic_file.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <tuple>
@@ -105,6 +109,75 @@ bool CyclicTest::follow(std::span<const double> deformation, std::span<const int
   return true;
 }
 
+void CyclicTest::save_state(io::StateWriter& out) const {
+  out(io::growing(result_.steps), io::growing(result_.cycles), result_.energy_total,
+      result_.max_tension, result_.max_compression, io::growing(result_.history),
+      io::growing(result_.shapes), hysteresis_, tracker_);
+  analysis_.save_state(out);
+}
+
+void CyclicTest::load_state(io::StateReader& in) {
+  if (steps_done() != 0)
+    throw std::logic_error("CyclicTest::load_state: the test has already run steps");
+  in(io::growing(result_.steps), io::growing(result_.cycles), result_.energy_total,
+     result_.max_tension, result_.max_compression, io::growing(result_.history),
+     io::growing(result_.shapes), hysteresis_, tracker_);
+  if (result_.steps.empty())
+    in.mismatch("a hysteresis without its initial point");
+  analysis_.load_state(in);
+}
+
+namespace {
+// The checkpoint file: this tag, the format's version, the run key, the wall time so far and
+// the test's state. The version changes whenever a state's fields change.
+constexpr std::string_view kCheckpointTag = "brb cyclic checkpoint";
+constexpr std::uint32_t kCheckpointVersion = 1;
+} // namespace
+
+void write_checkpoint(const CyclicTest& test, const CyclicCheckpoint& checkpoint,
+                      double elapsed_seconds) {
+  io::StateWriter out;
+  out(std::string(kCheckpointTag), kCheckpointVersion, checkpoint.run_key, elapsed_seconds);
+  test.save_state(out);
+  io::write_file_atomically(checkpoint.file, out.bytes());
+}
+
+ResumedRun read_checkpoint(CyclicTest& test, const CyclicCheckpoint& checkpoint) {
+  std::ifstream file(checkpoint.file, std::ios::binary);
+  if (!file)
+    throw io::CheckpointMismatch(checkpoint.file.string() + ": cannot open the checkpoint");
+  std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  io::StateReader in(std::move(bytes), checkpoint.file.string());
+  // the tag as the writer wrote it (its length, then its characters), checked before any
+  // length is trusted: any other file is "not a checkpoint", not a model of another size
+  std::uint64_t tag_length = 0;
+  std::string tag(kCheckpointTag.size(), '\0');
+  if (in.remaining() >= sizeof tag_length + tag.size()) {
+    in(tag_length);
+    for (char& character : tag)
+      in(character);
+  }
+  if (tag_length != kCheckpointTag.size() || tag != kCheckpointTag)
+    in.mismatch("not a checkpoint of brb cyclic");
+  std::string run_key;
+  std::uint32_t version = 0;
+  ResumedRun resumed;
+  in(version);
+  if (version != kCheckpointVersion)
+    in.mismatch("checkpoint format " + std::to_string(version) + " where this program reads " +
+                std::to_string(kCheckpointVersion));
+  in(run_key);
+  if (run_key != checkpoint.run_key)
+    in.mismatch("written for another run (the brace, the protocol or the solver settings "
+                "differ): delete it to start again");
+  in(resumed.elapsed_seconds);
+  test.load_state(in);
+  if (!in.at_end())
+    in.mismatch("bytes left after the model's state");
+  resumed.steps = test.steps_done();
+  return resumed;
+}
+
 void CyclicTest::record_shapes_at(std::vector<int> steps) {
   std::sort(steps.begin(), steps.end());
   shape_steps_ = std::move(steps);
@@ -195,16 +268,44 @@ CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const doubl
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude, NewtonSettings settings,
                                  bool record_history, std::optional<std::vector<int>> shape_steps,
-                                 StepObserver observer) {
+                                 StepObserver observer,
+                                 const std::optional<CyclicCheckpoint>& checkpoint) {
   CyclicTest test(brace, settings, record_history);
   if (shape_steps)
     test.record_shapes_at(std::move(*shape_steps));
-  test.observe_steps(std::move(observer));
-  if (deformation.size() > 1)
-    test.follow(deformation.subspan(1), std::span<const int>(cycle).subspan(1), cycle_amplitude);
+  ResumedRun resumed;
+  if (checkpoint && std::filesystem::exists(checkpoint->file)) {
+    resumed = read_checkpoint(test, *checkpoint);
+    if (checkpoint->taken_up)
+      checkpoint->taken_up(resumed);
+    if (static_cast<std::size_t>(resumed.steps) >= std::max<std::size_t>(deformation.size(), 1))
+      throw io::CheckpointMismatch(
+          checkpoint->file.string() + ": " + std::to_string(resumed.steps) +
+          " steps done where the protocol has " + std::to_string(deformation.size()) + " points");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return resumed.elapsed_seconds +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  double last_write = resumed.elapsed_seconds;
+  test.observe_steps([&](const CyclicStep& step) {
+    if (observer)
+      observer(step);
+    if (checkpoint && elapsed() - last_write >= checkpoint->interval_seconds) {
+      last_write = elapsed();
+      write_checkpoint(test, *checkpoint, last_write);
+    }
+  });
+  const auto first = static_cast<std::size_t>(resumed.steps) + 1;
+  if (deformation.size() > first)
+    test.follow(deformation.subspan(first), std::span<const int>(cycle).subspan(first),
+                cycle_amplitude);
   CyclicTestResult result = test.result();
   if (!cycle.empty())
     result.steps.front().cycle = cycle[0];
+  result.resumed_from_step = resumed.steps;
+  result.seconds_before_resume = resumed.elapsed_seconds;
   return result;
 }
 

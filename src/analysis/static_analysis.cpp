@@ -154,6 +154,39 @@ void StaticAnalysis::restore_path_state(const AnalysisPathState& state) {
   released_at_commit_ = energy_.released_by_laws;
 }
 
+template <class Archive, class Self>
+void StaticAnalysis::archive_committed(Archive& archive, Self& self) {
+  archive(self.committed_, self.committed_internal_force_, self.control_value_, self.control_force_,
+          self.committed_stable_, self.energy_, self.energy_error_sum_, self.released_at_commit_,
+          self.force_scale_, self.total_iterations_, self.total_substeps_, self.regularised_steps_,
+          self.unstable_accepted_, self.energy_cuts_, self.energy_tolerance_missed_,
+          self.far_branch_cuts_, self.retraced_steps_);
+}
+
+void StaticAnalysis::save_state(io::StateWriter& out) const {
+  out(static_cast<std::uint64_t>(model_.elements().size()),
+      static_cast<std::uint64_t>(free_dofs_.size()));
+  archive_committed(out, *this);
+  for (const auto& element : model_.elements())
+    element->save_state(out);
+}
+
+void StaticAnalysis::load_state(io::StateReader& in) {
+  std::uint64_t elements = 0, equations = 0;
+  in(elements, equations);
+  if (elements != model_.elements().size() || equations != free_dofs_.size())
+    in.mismatch("a model of " + std::to_string(elements) + " elements and " +
+                std::to_string(equations) + " free DOFs where this one has " +
+                std::to_string(model_.elements().size()) + " and " +
+                std::to_string(free_dofs_.size()) +
+                ": a checkpoint of another brace, refinement or program version");
+  archive_committed(in, *this);
+  for (const auto& element : model_.elements())
+    element->load_state(in);
+  trial_ = committed_;
+  internal_force_ = committed_internal_force_;
+}
+
 void StaticAnalysis::use_load_control(const Eigen::VectorXd& reference_load) {
   if (reference_load.size() != model_.dof_count())
     throw std::invalid_argument("load vector size");

@@ -487,6 +487,15 @@ void CasingContact::record_stress_work() {
   trial_.stress_work = committed_.stress_work + 0.5 * work;
 }
 
+void CasingContact::save_state(io::StateWriter& out) const {
+  out(committed_, expansion_, in_contact_, open_evaluations_);
+}
+
+void CasingContact::load_state(io::StateReader& in) {
+  in(committed_, expansion_, in_contact_, open_evaluations_);
+  revert_to_committed();
+}
+
 ElementEnergy CasingContact::energy() const {
   ElementEnergy energy;
   const double layer = parameters_.layer_stiffness;

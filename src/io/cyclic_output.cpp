@@ -51,6 +51,10 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
                            {"energy_cuts", result.energy_cuts},
                            {"far_branch_cuts", result.far_branch_cuts},
                            {"energy_tolerance_missed", result.energy_tolerance_missed}};
+  if (result.resumed_from_step > 0) { // a run taken up from a checkpoint (README, "Checkpoints")
+    summary["solver"]["resumed_from_step"] = result.resumed_from_step;
+    summary["solver"]["seconds_before_resume"] = result.seconds_before_resume;
+  }
   summary["energy_balance"] = Json{{"external_work", balance.external_work},
                                    {"stored", balance.stored},
                                    {"dissipated", balance.dissipated},

@@ -9,12 +9,15 @@
 #include "brb/io/json_input.hpp"
 #include "brb/io/material_input.hpp"
 #include "brb/io/protocol.hpp"
+#include "brb/io/state_archive.hpp"
 #include "brb/material/parameter_error.hpp"
 #include "brb/model/brace_model.hpp"
 #include "brb/validation/reference_path.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 namespace brb::validation {
@@ -262,7 +265,8 @@ std::vector<CheckResult> evaluate_checks(const Specimen& specimen, const RunData
 }
 
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
-                        const fs::path& output_directory, analysis::StepObserver observer) {
+                        const fs::path& output_directory, analysis::StepObserver observer,
+                        const std::optional<fs::path>& checkpoint, double checkpoint_interval) {
   const model::BraceSpec spec = refined(prepared.brace, refinement);
   model::BraceModel brace = build_checked(spec, prepared.specimen.brace_file);
   const io::LoadingProtocol protocol =
@@ -272,10 +276,22 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   const bool histories = needs_history(prepared.specimen);
   analysis::NewtonSettings settings;
   settings.balance_tolerance = prepared.specimen.balance_tolerance;
+  std::optional<analysis::CyclicCheckpoint> checkpoint_settings;
+  if (checkpoint) {
+    std::ostringstream key;
+    key << std::setprecision(17) << "validate " << prepared.specimen.id << " x" << refinement
+        << " brace " << io::file_fingerprint(prepared.specimen.brace_file) << " protocol "
+        << io::file_fingerprint(prepared.specimen.protocol_file) << " balance_tolerance "
+        << settings.balance_tolerance << " histories " << histories;
+    checkpoint_settings = analysis::CyclicCheckpoint{*checkpoint, checkpoint_interval, key.str()};
+  }
   const analysis::CyclicTestResult result = analysis::run_cyclic_test(
       brace, protocol.deformation, protocol.cycle, protocol.cycle_amplitude, settings, histories,
-      std::nullopt, std::move(observer));
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+      std::nullopt, std::move(observer), checkpoint_settings);
+  // the wall time of the whole analysis, with the runs before a checkpoint's
+  const double elapsed =
+      result.seconds_before_resume +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   fs::create_directories(output_directory);
   io::write_file_atomically(output_directory / "hysteresis.csv",
@@ -288,6 +304,8 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   if (histories) // the file `brb cyclic --histories` writes: where the failure cycle comes from
     io::write_file_atomically(output_directory / "element_history.csv",
                               io::element_history_table(result).text());
+  if (checkpoint) // the outputs hold the whole run now
+    fs::remove(*checkpoint);
 
   RunOutcome outcome;
   outcome.refinement = refinement;
@@ -298,7 +316,8 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   outcome.steps = io::converged_steps(result);
   outcome.planned_steps = static_cast<int>(protocol.deformation.size()) - 1;
   outcome.iterations = result.iterations;
-  outcome.run_seconds = elapsed.count();
+  outcome.run_seconds = elapsed;
+  outcome.resumed_from_step = result.resumed_from_step;
   outcome.energy_balance_error = result.energy_balance.relative_error();
   outcome.integration_misfit = result.energy_balance.relative_misfit();
   outcome.yield_deformation = brace.yield_deformation;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -777,6 +779,83 @@ TEST(CyclicCli, MissingArgumentsAndFilesAreUsageOrInputErrors) {
   EXPECT_EQ(no_brace.exit_code, 2);
   EXPECT_EQ(no_brace.err.rfind("brb: error: " + absent.string() + ": ", 0), 0u) << no_brace.err;
   EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
+// --checkpoint: a run killed after writing its checkpoint is taken up by the next run with
+// the same files and settings and ends with the outputs of a run that never stopped (the same
+// bytes); a file that is not a checkpoint of this run is refused before anything is written.
+// The brace is the source's small BRB of case 3 (validation/thesis_small_case3), whose core
+// buckles in the casing's gap: a few seconds per run.
+TEST(CyclicCli, ARunKilledAfterACheckpointIsTakenUpToTheSameOutputs) {
+  const fs::path specimen = fs::path(BRB_SOURCE_DIR) / "validation" / "thesis_small_case3";
+  const std::string inputs = shell_quoted((specimen / "brace.json").string()) + " --protocol " +
+                             shell_quoted((specimen / "protocol.json").string());
+  const ScratchDirectory scratch;
+  const fs::path reference = scratch.path() / "reference";
+  const fs::path resumed = scratch.path() / "resumed";
+  const fs::path checkpoint = scratch.path() / "run.checkpoint";
+  const CliRun whole = run_brb("cyclic " + inputs + " --out " + shell_quoted(reference.string()));
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+
+  // started in the background with a checkpoint after every step, killed once one is written
+  const fs::path pid_file = scratch.path() / "pid";
+  const std::string background =
+      shell_quoted(BRB_CLI_PATH) + " cyclic " + inputs + " --out " +
+      shell_quoted(resumed.string()) + " --checkpoint " + shell_quoted(checkpoint.string()) +
+      " --checkpoint-every 1e-9 >/dev/null 2>&1 </dev/null & echo $! > " +
+      shell_quoted(pid_file.string());
+  ASSERT_EQ(std::system(background.c_str()), 0);
+  for (int poll = 0; poll < 6000 && !fs::exists(checkpoint); ++poll)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint written";
+  std::string pid = read_file(pid_file);
+  pid.erase(pid.find_last_not_of(" \n") + 1);
+  ASSERT_EQ(std::system(("kill -9 " + pid + " 2>/dev/null; while kill -0 " + pid +
+                         " 2>/dev/null; do sleep 0.01; done")
+                            .c_str()),
+            0);
+  ASSERT_TRUE(fs::exists(checkpoint));
+  ASSERT_FALSE(fs::exists(resumed / "hysteresis.csv")) << "the run ended before it was killed";
+
+  const CliRun taken_up = run_brb("cyclic " + inputs + " --out " + shell_quoted(resumed.string()) +
+                                  " --checkpoint " + shell_quoted(checkpoint.string()));
+  ASSERT_EQ(taken_up.exit_code, 0) << taken_up.err;
+  EXPECT_NE(taken_up.err.find("taking up the run from the checkpoint " + checkpoint.string()),
+            std::string::npos)
+      << taken_up.err;
+  EXPECT_FALSE(fs::exists(checkpoint)) << "the checkpoint stays once the outputs are written";
+  EXPECT_EQ(read_file(resumed / "hysteresis.csv"), read_file(reference / "hysteresis.csv"));
+  const json summary = json::parse(read_file(resumed / "summary.json"));
+  const json reference_summary = json::parse(read_file(reference / "summary.json"));
+  EXPECT_GE(summary["solver"]["resumed_from_step"].get<int>(), 1);
+  EXPECT_EQ(summary["energy_balance"], reference_summary["energy_balance"]);
+  EXPECT_EQ(summary["solver"]["iterations"], reference_summary["solver"]["iterations"]);
+  EXPECT_FALSE(reference_summary["solver"].contains("resumed_from_step"));
+}
+
+TEST(CyclicCli, AFileThatIsNotACheckpointOfTheRunIsRefusedBeforeAnythingIsWritten) {
+  const ScratchDirectory scratch;
+  const fs::path brace = scratch.write("brace.json", test_brace().dump());
+  const fs::path protocol = scratch.write(
+      "protocol.json", R"({"units": "mm", "cycles": [{"amplitude": 0.2, "cycles": 1}]})");
+  const fs::path checkpoint = scratch.write("run.checkpoint", "step,deformation\n0,0\n");
+  const fs::path out = scratch.path() / "out";
+  const CliRun run =
+      run_brb("cyclic " + shell_quoted(brace.string()) + " --protocol " +
+              shell_quoted(protocol.string()) + " --out " + shell_quoted(out.string()) +
+              " --checkpoint " + shell_quoted(checkpoint.string()));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find(checkpoint.string() + ": not a checkpoint of brb cyclic"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::exists(checkpoint)) << "a refused checkpoint is left as it was";
+
+  const CliRun bad_interval = run_brb("cyclic " + shell_quoted(brace.string()) + " --protocol " +
+                                      shell_quoted(protocol.string()) + " --out " +
+                                      shell_quoted(out.string()) + " --checkpoint-every 0");
+  EXPECT_EQ(bad_interval.exit_code, 2);
+  EXPECT_NE(bad_interval.err.find("--checkpoint-every"), std::string::npos) << bad_interval.err;
 }
 
 } // namespace

@@ -165,6 +165,38 @@ TEST(ValidateCli, ProgressPrintsALineForEveryStepOfEveryRun) {
       << bad.err;
 }
 
+// --checkpoint-dir: each run writes DIR/<id>_x<k>.checkpoint while it runs and removes it
+// once its outputs are written, with the results of a run without checkpoints; a file there
+// that is not that run's checkpoint is refused (exit 2). Taking a run up is brb cyclic's code
+// (run_cyclic_test), tested there.
+TEST(ValidateCli, CheckpointDirectoryKeepsAFilePerRunUntilItsOutputsAreWritten) {
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  const CliRun plain = run_brb("validate " + shell_quoted(folder.string()) + " --only tiny");
+  ASSERT_TRUE(plain.exit_code == 0 || plain.exit_code == 1) << plain.err;
+  const json plain_report = json::parse(read_file(folder / "report.json"));
+
+  const fs::path checkpoints = scratch.path() / "checkpoints";
+  const std::string command = "validate " + shell_quoted(folder.string()) +
+                              " --only tiny --refinements 1,2 --checkpoint-dir " +
+                              shell_quoted(checkpoints.string()) + " --checkpoint-every 1e-9";
+  const CliRun run = run_brb(command);
+  ASSERT_TRUE(run.exit_code == 0 || run.exit_code == 1) << run.err;
+  ASSERT_TRUE(fs::is_directory(checkpoints));
+  EXPECT_TRUE(fs::is_empty(checkpoints));
+  const json report = json::parse(read_file(folder / "report.json"));
+  const json& runs = report.at("specimens").at(0).at("runs");
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].at("checks"), plain_report.at("specimens").at(0).at("runs").at(0).at("checks"));
+
+  scratch.write("checkpoints/tiny_x2.checkpoint", "not a checkpoint");
+  const CliRun refused = run_brb(command);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("tiny_x2.checkpoint: not a checkpoint of brb cyclic"),
+            std::string::npos)
+      << refused.err;
+}
+
 TEST(ValidateCli, InputErrorsExitWithTwoAndWriteNothing) {
   const ScratchDirectory scratch;
   json metrics = tiny_metrics();

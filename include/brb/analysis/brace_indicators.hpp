@@ -59,6 +59,18 @@ struct BraceIndicators {
   bool global_buckling = false;
 };
 
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, BraceIndicators>
+void state_fields(Archive& archive, Self& indicators) {
+  archive(indicators.max_steel_damage, indicators.max_mortar_damage, indicators.max_bearing_damage,
+          indicators.min_bearing_residual_strength, indicators.min_fill_residual_strength,
+          indicators.max_core_lateral_displacement, indicators.max_casing_lateral_displacement,
+          indicators.max_buckling_half_waves, indicators.cumulative_inelastic_deformation,
+          indicators.uniform_axial_strain_beams, indicators.core_fracture,
+          indicators.casing_failure, indicators.global_buckling);
+}
+
 /// Steel damage at which a core fiber counts as fractured (the core-fracture flag).
 inline constexpr double kFractureDamage = 0.9;
 /// Residual strength (fraction of the onset stress) at or below which the mortar under a
@@ -99,6 +111,14 @@ public:
 
   /// Largest lateral motion of a node of the brace (core and casing) in the state `position`.
   double max_lateral_displacement(const Positions& position) const;
+
+  /// Checkpoints (io/state_archive.hpp): what the tracker carries from step to step.
+  template <class Archive, class Self>
+  requires io::state_of<Self, BraceIndicatorTracker>
+  friend void state_fields(Archive& archive, Self& tracker) {
+    archive(tracker.previous_deformation_, tracker.previous_force_, tracker.previous_bow_,
+            tracker.indicators_);
+  }
 
 private:
   const model::BraceHandles* brace_;

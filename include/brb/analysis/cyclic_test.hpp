@@ -7,6 +7,7 @@
 #include "brb/analysis/static_analysis.hpp"
 #include "brb/model/brace_model.hpp"
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <span>
@@ -25,6 +26,14 @@ struct CyclicStep {
   int substeps = 1;                      ///< substeps the step needed
 };
 
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, CyclicStep>
+void state_fields(Archive& archive, Self& step) {
+  archive(step.step, step.cycle, step.deformation, step.force, step.max_lateral_displacement,
+          step.substeps);
+}
+
 /// Called after every converged step of a cyclic test, e.g. to report progress on a long run.
 using StepObserver = std::function<void(const CyclicStep&)>;
 
@@ -38,6 +47,12 @@ struct ElementHistoryPoint {
   double dissipated_energy = 0.0; ///< N mm, by all the brace's elements, with jumps
   BraceIndicators indicators;     ///< up to and including this step
 };
+
+template <class Archive, class Self>
+requires io::state_of<Self, ElementHistoryPoint>
+void state_fields(Archive& archive, Self& point) {
+  archive(point.step, point.core_strain, point.dissipated_energy, point.indicators);
+}
 
 /// One node of the brace's deformed shape after a step (`brb cyclic --shape-steps`): where
 /// the core buckles inside the gap, how the casing follows, where the mortar bears and is
@@ -71,6 +86,15 @@ struct BraceShapeNode {
   double casing_axial_force = 0;
 };
 
+template <class Archive, class Self>
+requires io::state_of<Self, BraceShapeNode>
+void state_fields(Archive& archive, Self& node) {
+  archive(node.step, node.node, node.position, node.lateral_y, node.lateral_z, node.station,
+          node.casing_lateral_y, node.casing_lateral_z, node.bearing_force_y, node.bearing_force_z,
+          node.mortar_damage, node.friction_force, node.wave_normal_force, node.core_axial_force,
+          node.core_axial_strain, node.casing_axial_force);
+}
+
 struct CycleMetrics {
   int index = 0;                ///< 1-based
   double amplitude = 0.0;       ///< mm (from the protocol)
@@ -78,6 +102,12 @@ struct CycleMetrics {
   double max_tension = 0.0;     ///< N
   double max_compression = 0.0; ///< N (negative)
 };
+
+template <class Archive, class Self>
+requires io::state_of<Self, CycleMetrics>
+void state_fields(Archive& archive, Self& cycle) {
+  archive(cycle.index, cycle.amplitude, cycle.energy, cycle.max_tension, cycle.max_compression);
+}
 
 struct CyclicTestResult {
   std::vector<CyclicStep> steps;
@@ -100,6 +130,30 @@ struct CyclicTestResult {
   /// The deformed shape after each asked step and after the last converged one, when shapes
   /// were asked for (CyclicTest::record_shapes_at), step by step.
   std::vector<BraceShapeNode> shapes;
+  /// A run taken up from a checkpoint (CyclicCheckpoint): the steps the earlier run(s) had
+  /// converged (0: this run started from the unloaded state) and their wall time (s).
+  int resumed_from_step = 0;
+  double seconds_before_resume = 0.0;
+};
+
+/// Checkpoints of a long cyclic test (`brb cyclic --checkpoint`, `brb validate
+/// --checkpoint-dir`): the test's whole state is written to `file` (atomically) at most
+/// every `interval_seconds` of wall time after a converged step, and a run that finds the
+/// file takes up from it; the file is refused unless it was written for the same `run_key`
+/// (the caller's account of the input: brace and protocol files and settings) by this
+/// program's checkpoint format.
+/// What a checkpoint held besides the test's state.
+struct ResumedRun {
+  int steps = 0;                ///< steps converged before it
+  double elapsed_seconds = 0.0; ///< wall time of the run(s) that wrote it
+};
+
+struct CyclicCheckpoint {
+  std::filesystem::path file;
+  double interval_seconds = 600.0;
+  std::string run_key;
+  /// Called once a checkpoint was read (e.g. to say so before a long run goes on).
+  std::function<void(const ResumedRun&)> taken_up = {};
 };
 
 /// Folds converged steps into a CyclicTestResult's hysteresis: the step list, the work of the
@@ -110,6 +164,13 @@ class HysteresisAccumulator {
 public:
   /// `result` must hold the initial point as its first step and outlive the accumulator.
   explicit HysteresisAccumulator(CyclicTestResult& result) : result_(&result) {}
+
+  /// Checkpoints (io/state_archive.hpp): the open cycle (the result is the owner's).
+  template <class Archive, class Self>
+  requires io::state_of<Self, HysteresisAccumulator>
+  friend void state_fields(Archive& archive, Self& accumulator) {
+    archive(accumulator.open_cycle_);
+  }
 
   /// Appends `step` after the last one. `cycle_ends`: it is the last point of its cycle (the
   /// cycle then counts as completed); `cycle_amplitude[c-1]`: the amplitude of cycle c.
@@ -154,6 +215,15 @@ public:
 
   /// Indicators of the brace up to the last converged step.
   const BraceIndicators& indicators() const { return tracker_.indicators(); }
+  /// Steps converged so far (the initial point not counted).
+  int steps_done() const { return static_cast<int>(result_.steps.size()) - 1; }
+
+  /// Checkpoints (io/state_archive.hpp): the test after its last converged step (hysteresis,
+  /// histories, shapes, indicators, the analysis and every element). load_state reads it into
+  /// a test of a brace built from the same input, before its first step; follow() then drives
+  /// it on from the step after the checkpoint's (give it the points from there).
+  void save_state(io::StateWriter& out) const;
+  void load_state(io::StateReader& in);
   /// The result so far (solver statistics and energy balance up to the last step).
   CyclicTestResult result() const;
 
@@ -183,12 +253,26 @@ void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& 
 /// point; `cycle[k]` is the full cycle point k belongs to and `cycle_amplitude[c-1]` the
 /// amplitude of cycle c. Stops at the first step the solver cannot pass (after substepping
 /// and the fallback algorithm) and says why. `shape_steps`: see CyclicTest::record_shapes_at;
-/// `observer`: called after every converged step.
+/// `observer`: called after every converged step. `checkpoint`: takes the run up from its
+/// file if there is one (read_checkpoint) and writes it while running (CyclicCheckpoint);
+/// the caller removes the file once it has written the run's outputs.
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,
                                  std::span<const int> cycle,
                                  std::span<const double> cycle_amplitude,
                                  NewtonSettings settings = {}, bool record_history = false,
                                  std::optional<std::vector<int>> shape_steps = std::nullopt,
-                                 StepObserver observer = {});
+                                 StepObserver observer = {},
+                                 const std::optional<CyclicCheckpoint>& checkpoint = std::nullopt);
+
+/// Writes `test`'s state after its last converged step to checkpoint.file (atomically, so a
+/// run killed while writing leaves the previous checkpoint), with the run key and the wall
+/// time so far.
+void write_checkpoint(const CyclicTest& test, const CyclicCheckpoint& checkpoint,
+                      double elapsed_seconds);
+
+/// Reads checkpoint.file into `test` (built from the same input, before its first step).
+/// Throws io::CheckpointMismatch when the file is not a checkpoint of this program's format,
+/// was written for another run key or does not fit the model.
+ResumedRun read_checkpoint(CyclicTest& test, const CyclicCheckpoint& checkpoint);
 
 } // namespace brb::analysis

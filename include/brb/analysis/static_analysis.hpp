@@ -204,6 +204,16 @@ struct EnergyBalance {
   double relative_misfit() const;
 };
 
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, EnergyBalance>
+void state_fields(Archive& archive, Self& energy) {
+  static_assert(sizeof(EnergyBalance) == 7 * sizeof(double),
+                "a new field of EnergyBalance must be listed here");
+  archive(energy.external_work, energy.stored, energy.dissipated, energy.released_in_jumps,
+          energy.released_by_laws, energy.integration_misfit, energy.gross_work);
+}
+
 /// The committed path of an analysis: what a caller that rolls the analysis back (a
 /// condensed macro element between global commits) must keep besides its elements' states.
 struct AnalysisPathState {
@@ -219,6 +229,15 @@ struct AnalysisPathState {
 class StaticAnalysis {
 public:
   explicit StaticAnalysis(model::Model& model, NewtonSettings settings = {});
+
+  /// Checkpoints of a long run (io/state_archive.hpp): between steps, the committed state of
+  /// the analysis (nodes, forces, control, energy balance, statistics) and of every element
+  /// of its model. load_state reads it into an analysis of a model built from the same input
+  /// with the same control, as its committed and trial state; a checkpoint of another model
+  /// throws io::CheckpointMismatch. The next step then runs as it would have in the run that
+  /// wrote the checkpoint, to the bit (test CyclicCheckpoint).
+  void save_state(io::StateWriter& out) const;
+  void load_state(io::StateReader& in);
 
   /// Control by the displacement of one DOF (it becomes prescribed).
   void use_displacement_control(int node, model::Dof dof);
@@ -443,6 +462,9 @@ private:
   bool unstable_end_of_path(const PathSubstep& substep) const;
 
   model::Model& model_;
+  /// The fields save_state and load_state archive, in one list.
+  template <class Archive, class Self> static void archive_committed(Archive& archive, Self& self);
+
   NewtonSettings settings_;
   std::optional<std::pair<int, model::Dof>> displacement_control_;
   Eigen::VectorXd reference_load_;

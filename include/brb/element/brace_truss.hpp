@@ -42,6 +42,13 @@ public:
   void commit() override;
   void revert_to_committed() override;
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  void save_state(io::StateWriter& out) const override {
+    out(committed_, committed_strain_, committed_force_, committed_work_, deformation_);
+  }
+  void load_state(io::StateReader& in) override {
+    in(committed_, committed_strain_, committed_force_, committed_work_, deformation_);
+    revert_to_committed();
+  }
   ElementEnergy energy() const override;
 
   const BraceTrussParameters& parameters() const { return parameters_; }

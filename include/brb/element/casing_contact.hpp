@@ -184,6 +184,8 @@ public:
     path_opening_ = committed_.opening;
   }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  void save_state(io::StateWriter& out) const override;
+  void load_state(io::StateReader& in) override;
   ElementEnergy energy() const override;
 
   /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N;
@@ -257,6 +259,15 @@ private:
     double wave_stress = 0.0;
     double wave_tangent = 0.0;
     double wave_normal_force = 0.0;
+
+    template <class Archive, class Self>
+    requires io::state_of<Self, State>
+    friend void state_fields(Archive& archive, Self& state) {
+      archive(state.faces, state.friction, state.bearing_strain, state.walls, state.wall_strain,
+              state.opening, state.wall_force, state.relative, state.link_force, state.face_force,
+              state.penetration, state.stress_work, state.wave_steel, state.wave_stress,
+              state.wave_tangent, state.wave_normal_force);
+    }
   };
 
   /// The core's axial strain at the station from the chord of its neighbour nodes, with the

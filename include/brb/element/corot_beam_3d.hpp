@@ -154,6 +154,17 @@ public:
     switch_work_ = committed_switch_work_;
   }
 
+  /// Checkpoints (io/state_archive.hpp): the committed state and the last evaluation's
+  /// section responses, which the energies and outputs read; a reader follows with
+  /// revert_to_committed().
+  template <class Archive, class Self>
+  requires io::state_of<Self, LocalBeam>
+  friend void state_fields(Archive& archive, Self& beam) {
+    archive(beam.sections_, beam.committed_axial_strain_, beam.committed_axial_field_,
+            beam.committed_switch_work_, beam.section_response_, beam.axial_force_at_,
+            beam.axial_stiffness_at_, beam.twist_);
+  }
+
   ElementEnergy energy() const {
     ElementEnergy energy;
     for (std::size_t k = 0; k < sections_.size(); ++k) {
@@ -596,6 +607,11 @@ public:
   void commit() override { local_.commit(); }
   void revert_to_committed() override { local_.revert_to_committed(); }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  void save_state(io::StateWriter& out) const override { out(frame_, local_, local_force_); }
+  void load_state(io::StateReader& in) override {
+    in(frame_, local_, local_force_);
+    local_.revert_to_committed();
+  }
   ElementEnergy energy() const override { return local_.energy(); }
 
   const CorotationalFrame& frame() const { return frame_; }

@@ -72,6 +72,13 @@ public:
     axial_force_ = committed_force_;
   }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  void save_state(io::StateWriter& out) const override {
+    out(committed_, committed_strain_, committed_force_, committed_work_);
+  }
+  void load_state(io::StateReader& in) override {
+    in(committed_, committed_strain_, committed_force_, committed_work_);
+    revert_to_committed();
+  }
 
   ElementEnergy energy() const override {
     const double volume = area_ * initial_length_;

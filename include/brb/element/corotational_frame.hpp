@@ -49,6 +49,14 @@ public:
   void global_response(const LocalVector& local_force, const LocalMatrix& local_tangent,
                        GlobalVector& force, GlobalMatrix& tangent) const;
 
+  /// Checkpoints (io/state_archive.hpp): the current state, which outputs read between steps.
+  template <class Archive, class Self>
+  requires io::state_of<Self, CorotationalFrame>
+  friend void state_fields(Archive& archive, Self& frame) {
+    archive(frame.length_, frame.frame_, frame.director_i_, frame.director_j_, frame.mean_director_,
+            frame.local_deformation_);
+  }
+
 private:
   double initial_length_ = 0.0;
   Matrix3 initial_frame_ = Matrix3::Identity();

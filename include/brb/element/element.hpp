@@ -4,6 +4,8 @@
 // One virtual call per element per evaluation; the loops inside elements are not virtual.
 #pragma once
 
+#include "brb/io/state_archive.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -22,6 +24,13 @@ struct NodeConfiguration {
   Matrix3 rotation = Matrix3::Identity();
 };
 
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, NodeConfiguration>
+void state_fields(Archive& archive, Self& node) {
+  archive(node.position, node.rotation);
+}
+
 /// Energies of an element's trial state (N mm).
 struct ElementEnergy {
   double stored = 0.0;     ///< recoverable (free) energy
@@ -35,6 +44,12 @@ struct ElementEnergy {
   /// linear, or that do not track it, report 0 (their misfit, if any, stays in the balance).
   double integration_misfit = 0.0;
 };
+
+template <class Archive, class Self>
+requires io::state_of<Self, ElementEnergy>
+void state_fields(Archive& archive, Self& energy) {
+  archive(energy.stored, energy.dissipated, energy.integration_misfit);
+}
 
 class Element {
 public:
@@ -72,6 +87,16 @@ public:
   /// keeps a twin of it as its committed state (BRBElement), because the substeps of its
   /// internal solver commit the internal elements. Throws std::bad_cast for another type.
   virtual void copy_state_from(const Element& other) = 0;
+
+  /// Checkpoints of a run (io/state_archive.hpp): writes the committed state, what the next
+  /// step starts from, with the outputs of the last evaluation that reports read after a
+  /// step (forces, flags). Called between steps, after a commit.
+  virtual void save_state(io::StateWriter& out) const;
+  /// Reads what save_state wrote into an element built from the same data, as its committed
+  /// and trial state (io::CheckpointMismatch if the sizes differ). The defaults throw
+  /// std::logic_error: an element that a checkpointed run meets must override both (every
+  /// element of a brace model does; BRBElement, the frames' condensed brace, does not).
+  virtual void load_state(io::StateReader& in);
 };
 
 /// copy_state_from for elements whose state is their value: a plain copy.

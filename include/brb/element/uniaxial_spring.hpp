@@ -47,6 +47,17 @@ public:
   void commit() override;
   void revert_to_committed() override;
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  void save_state(io::StateWriter& out) const override {
+    for (const Channel& channel : channels_)
+      out(channel.committed);
+    out(deformation_, dof_force_, energy_);
+  }
+  void load_state(io::StateReader& in) override {
+    for (Channel& channel : channels_)
+      in(channel.committed);
+    in(deformation_, dof_force_, energy_);
+    revert_to_committed();
+  }
   ElementEnergy energy() const override { return energy_; }
 
   /// Of the last evaluation, per DOF in the spring's axes (zero where no law):

@@ -37,6 +37,13 @@ public:
   void commit() override {}
   void revert_to_committed() override {}
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
+  /// Elastic: no history; the last evaluation's force, moment and energy.
+  void save_state(io::StateWriter& out) const override {
+    out(spring_force_, spring_moment_, stored_energy_);
+  }
+  void load_state(io::StateReader& in) override {
+    in(spring_force_, spring_moment_, stored_energy_);
+  }
   ElementEnergy energy() const override { return {stored_energy_, 0.0}; }
 
   /// Force on node j (N; reaction of the translational springs) of the last evaluation.

@@ -6,6 +6,7 @@
 // Damage therefore starts at ft in uniaxial tension and at fc in uniaxial compression.
 #pragma once
 
+#include "brb/io/state_archive.hpp"
 #include "brb/material/exponential_softening.hpp"
 #include "brb/material/tensor6.hpp"
 
@@ -27,6 +28,15 @@ struct MortarState {
   double damage = 0.0;
   double dissipated_energy = 0.0; ///< integral of psi0 dd per unit volume (MPa)
 };
+
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, MortarState>
+void state_fields(Archive& archive, Self& state) {
+  static_assert(sizeof(MortarState) == 3 * sizeof(double),
+                "a new field of MortarState must be listed here");
+  archive(state.damage_threshold, state.damage, state.dissipated_energy);
+}
 
 /// 3D form. Strain and stress in Voigt order with engineering shear strains.
 class MortarDamage3D {

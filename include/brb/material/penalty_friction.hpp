@@ -7,6 +7,8 @@
 // enough for axial friction; leave the other zero).
 #pragma once
 
+#include "brb/io/state_archive.hpp"
+
 #include <Eigen/Core>
 
 namespace brb::material {
@@ -24,6 +26,13 @@ struct FrictionState {
   Eigen::Vector2d slip = Eigen::Vector2d::Zero(); ///< irreversible tangential slip (mm)
   double dissipated_energy = 0.0;                 ///< friction work T . d(slip) (N mm)
 };
+
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, FrictionState>
+void state_fields(Archive& archive, Self& state) {
+  archive(state.slip, state.dissipated_energy);
+}
 
 class PenaltyFriction {
 public:

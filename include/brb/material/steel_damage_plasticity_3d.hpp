@@ -7,6 +7,7 @@
 // returns stress, tangent and the trial state; the caller decides whether to commit it.
 #pragma once
 
+#include "brb/io/state_archive.hpp"
 #include "brb/material/steel_parameters.hpp"
 #include "brb/material/tensor6.hpp"
 
@@ -21,6 +22,15 @@ struct DissipatedEnergy {
   double softening = 0.0; ///< integral of psi0 dd: tends to Gf / lc when fully damaged
   double total = 0.0;     ///< plastic + softening + hardening energy released by damage
 };
+
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, DissipatedEnergy>
+void state_fields(Archive& archive, Self& energy) {
+  static_assert(sizeof(DissipatedEnergy) == 3 * sizeof(double),
+                "a new field of DissipatedEnergy must be listed here");
+  archive(energy.plastic, energy.softening, energy.total);
+}
 
 struct SteelState3D {
   Vector6 plastic_strain = Vector6::Zero();                ///< Mandel

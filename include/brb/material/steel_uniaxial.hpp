@@ -20,6 +20,16 @@ struct SteelStateUniaxial {
   DissipatedEnergy dissipated;
 };
 
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, SteelStateUniaxial>
+void state_fields(Archive& archive, Self& state) {
+  static_assert(sizeof(SteelStateUniaxial) == (7 + HardeningTerms::kMax) * sizeof(double),
+                "a new field of SteelStateUniaxial must be listed here");
+  archive(state.plastic_strain, state.back_stress, state.equivalent_plastic_strain,
+          state.damage_threshold, state.damage, state.dissipated);
+}
+
 class SteelUniaxial {
 public:
   using State = SteelStateUniaxial;

@@ -32,6 +32,12 @@ public:
     first_.commit();
     second_.commit();
   }
+  /// Checkpoints (io/state_archive.hpp).
+  template <class Archive, class Self>
+  requires io::state_of<Self, CompositeSection>
+  friend void state_fields(Archive& archive, Self& section) {
+    archive(section.first_, section.second_, section.response_);
+  }
   void revert_to_committed() {
     first_.revert_to_committed();
     second_.revert_to_committed();

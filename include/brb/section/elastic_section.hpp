@@ -31,6 +31,12 @@ public:
   }
   void commit() {}
   void revert_to_committed() {}
+  /// Checkpoints (io/state_archive.hpp): the last evaluation, which the energies read.
+  template <class Archive, class Self>
+  requires io::state_of<Self, ElasticSection>
+  friend void state_fields(Archive& archive, Self& section) {
+    archive(section.deformation_, section.response_);
+  }
   double torsional_stiffness() const { return properties_.torsional_stiffness; }
   double stored_energy() const { return 0.5 * response_.force.dot(deformation_); }
   double dissipated_energy() const { return 0.0; }

@@ -10,6 +10,7 @@
 // over fibers calls the law directly (no virtual call per fiber).
 #pragma once
 
+#include "brb/io/state_archive.hpp"
 #include "brb/section/fiber_layout.hpp"
 
 #include <Eigen/Core>
@@ -28,6 +29,13 @@ struct SectionResponse {
   SectionVector force = SectionVector::Zero();   ///< (N, M_y, M_z)
   SectionMatrix tangent = SectionMatrix::Zero(); ///< d force / d deformation (symmetric)
 };
+
+/// Checkpoints (io/state_archive.hpp).
+template <class Archive, class Self>
+requires io::state_of<Self, SectionResponse>
+void state_fields(Archive& archive, Self& response) {
+  archive(response.force, response.tangent);
+}
 
 template <class UniaxialLaw> class FiberSection {
 public:
@@ -73,6 +81,15 @@ public:
     trial_ = committed_;
     stress_ = committed_stress_;
     strain_ = committed_strain_;
+  }
+
+  /// Checkpoints (io/state_archive.hpp): the committed fibers and the last response; a
+  /// reader follows with revert_to_committed().
+  template <class Archive, class Self>
+  requires io::state_of<Self, FiberSection>
+  friend void state_fields(Archive& archive, Self& section) {
+    archive(section.committed_, section.committed_stress_, section.committed_strain_,
+            section.committed_work_, section.response_);
   }
 
   double torsional_stiffness() const { return shear_modulus_ * layout_.torsion_constant; }

@@ -84,6 +84,9 @@ struct RunOutcome {
   int planned_steps = 0; ///< points of the protocol minus one
   int iterations = 0;
   double run_seconds = 0.0; ///< wall-clock time of the analysis (not of writing)
+  /// Steps a checkpoint of an earlier run had converged (0: run from the start); run_seconds
+  /// then includes that run's time.
+  int resumed_from_step = 0;
   double energy_balance_error = 0.0;
   /// EnergyBalance::relative_misfit: the laws' time discretisation, reported.
   double integration_misfit = 0.0;
@@ -95,9 +98,14 @@ struct RunOutcome {
 /// Runs `prepared` at `refinement`, writes hysteresis.csv and summary.json (the files of
 /// `brb cyclic`) into `output_directory` (created with its parents), and judges the checks.
 /// `observer` is called after every converged step (e.g. progress lines).
+/// `checkpoint`: a checkpoint file for this run (`brb validate --checkpoint-dir`): taken up if
+/// it exists and was written for the same specimen files, refinement and solver settings,
+/// written at most every `checkpoint_interval` seconds, removed once the outputs are written.
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
                         const std::filesystem::path& output_directory,
-                        analysis::StepObserver observer = {});
+                        analysis::StepObserver observer = {},
+                        const std::optional<std::filesystem::path>& checkpoint = std::nullopt,
+                        double checkpoint_interval = 600.0);
 
 /// The checks of a finished cyclic test (automatic ones, then the metrics): the part of
 /// run_specimen after the analysis, usable on any result.
