@@ -107,7 +107,11 @@ void write_run(std::ostringstream& out, const SpecimenOutcome& specimen, const R
       << run.core_elements << " core elements)\n\n";
   out << "- " << (run.completed ? "completed" : "**stopped early**") << ": " << run.steps << " of "
       << run.planned_steps << " steps, " << run.iterations << " Newton iterations, " << std::fixed
-      << std::setprecision(1) << run.run_seconds << std::defaultfloat << " s\n";
+      << std::setprecision(1) << run.run_seconds << std::defaultfloat << " s";
+  if (run.resumed_from_step > 0) // README, "Checkpoints": the time of every session it ran in
+    out << " (taken up from a checkpoint at step " << run.resumed_from_step
+        << "; the time is the runs' before and after it)";
+  out << "\n";
   if (const auto& record = specimen.specimen.record; record && record->run_seconds) {
     out << "- the reference `brb solid` run took " << std::fixed << std::setprecision(1)
         << *record->run_seconds << std::defaultfloat << " s";
@@ -350,6 +354,7 @@ Json report_json(const ValidationReport& report) {
                           {"planned_steps", run.planned_steps},
                           {"iterations", run.iterations},
                           {"run_seconds", run.run_seconds},
+                          {"resumed_from_step", run.resumed_from_step},
                           {"energy_balance_error", run.energy_balance_error},
                           {"integration_misfit", run.integration_misfit},
                           {"checks", std::move(checks)}});

@@ -8,9 +8,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace {
 
@@ -195,6 +198,66 @@ TEST(ValidateCli, CheckpointDirectoryKeepsAFilePerRunUntilItsOutputsAreWritten) 
   EXPECT_NE(refused.err.find("tiny_x2.checkpoint: not a checkpoint of brb cyclic"),
             std::string::npos)
       << refused.err;
+}
+
+// A run killed after its first checkpoint is taken up by the same command: its report says
+// from which step, with the results of the run that never stopped. The specimen is the
+// source's small BRB of case 3 (validation/thesis_small_case3's brace and protocol, a few
+// seconds), so that the run is still going when it is killed.
+TEST(ValidateCli, AKilledRunIsTakenUpFromItsCheckpointAndTheReportSaysSo) {
+  const ScratchDirectory scratch;
+  const fs::path source = fs::path(BRB_SOURCE_DIR) / "validation" / "thesis_small_case3";
+  fs::create_directories(scratch.path() / "validation" / "case3");
+  scratch.write("validation/case3/brace.json", read_file(source / "brace.json"));
+  scratch.write("validation/case3/protocol.json", read_file(source / "protocol.json"));
+  json metrics = tiny_metrics();
+  metrics["id"] = "case3";
+  metrics["metrics"] = json::array(
+      {{{"name", "loop energy"}, {"kind", "cycle_energy"}, {"cycle", 7}, {"unit", "N mm"}}});
+  scratch.write("validation/case3/metrics.json", metrics.dump(2));
+  const fs::path folder = scratch.path() / "validation";
+  const fs::path checkpoints = scratch.path() / "checkpoints";
+  const fs::path checkpoint = checkpoints / "case3_x1.checkpoint";
+  const std::string arguments = " validate " + shell_quoted(folder.string()) +
+                                " --checkpoint-dir " + shell_quoted(checkpoints.string()) +
+                                " --checkpoint-every 1e-9";
+
+  const CliRun whole = run_brb("validate " + shell_quoted(folder.string()));
+  ASSERT_TRUE(whole.exit_code == 0 || whole.exit_code == 1) << whole.err;
+  const json whole_report = json::parse(read_file(folder / "report.json"));
+
+  const fs::path pid_file = scratch.path() / "pid";
+  const std::string background = shell_quoted(BRB_CLI_PATH) + arguments +
+                                 " >/dev/null 2>&1 </dev/null & echo $! > " +
+                                 shell_quoted(pid_file.string());
+  ASSERT_EQ(std::system(background.c_str()), 0);
+  for (int poll = 0; poll < 6000 && !fs::exists(checkpoint); ++poll)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint written";
+  std::string pid = read_file(pid_file);
+  pid.erase(pid.find_last_not_of(" \n") + 1);
+  ASSERT_EQ(std::system(("kill -9 " + pid + " 2>/dev/null; while kill -0 " + pid +
+                         " 2>/dev/null; do sleep 0.01; done")
+                            .c_str()),
+            0);
+  ASSERT_TRUE(fs::exists(checkpoint)) << "the run ended before it was killed";
+
+  const CliRun taken_up = run_brb(arguments);
+  ASSERT_TRUE(taken_up.exit_code == 0 || taken_up.exit_code == 1) << taken_up.err;
+  EXPECT_NE(taken_up.out.find("checkpoint " + checkpoint.string() + " found"), std::string::npos)
+      << taken_up.out;
+  EXPECT_NE(taken_up.out.find("(taken up from a checkpoint at step "), std::string::npos)
+      << taken_up.out;
+  EXPECT_FALSE(fs::exists(checkpoint));
+  const json report = json::parse(read_file(folder / "report.json"));
+  const json& run = report.at("specimens").at(0).at("runs").at(0);
+  EXPECT_GE(run.at("resumed_from_step").get<int>(), 1);
+  EXPECT_EQ(whole_report.at("specimens").at(0).at("runs").at(0).at("resumed_from_step"), 0);
+  EXPECT_EQ(run.at("checks"), whole_report.at("specimens").at(0).at("runs").at(0).at("checks"));
+  EXPECT_EQ(run.at("iterations"),
+            whole_report.at("specimens").at(0).at("runs").at(0).at("iterations"));
+  EXPECT_NE(read_file(folder / "REPORT.md").find("(taken up from a checkpoint at step "),
+            std::string::npos);
 }
 
 TEST(ValidateCli, InputErrorsExitWithTwoAndWriteNothing) {
