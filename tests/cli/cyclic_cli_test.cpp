@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -18,7 +17,6 @@
 #include <ostream>
 #include <set>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -28,6 +26,7 @@ using brb::testing::lines_of;
 using brb::testing::numbers_of;
 using brb::testing::read_file;
 using brb::testing::run_brb;
+using brb::testing::run_brb_until_checkpoint;
 using brb::testing::ScratchDirectory;
 using brb::testing::shell_quoted;
 using nlohmann::json;
@@ -797,24 +796,12 @@ TEST(CyclicCli, ARunKilledAfterACheckpointIsTakenUpToTheSameOutputs) {
   const CliRun whole = run_brb("cyclic " + inputs + " --out " + shell_quoted(reference.string()));
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
 
-  // started in the background with a checkpoint after every step, killed once one is written
-  const fs::path pid_file = scratch.path() / "pid";
-  const std::string background =
-      shell_quoted(BRB_CLI_PATH) + " cyclic " + inputs + " --out " +
-      shell_quoted(resumed.string()) + " --checkpoint " + shell_quoted(checkpoint.string()) +
-      " --checkpoint-every 1e-9 >/dev/null 2>&1 </dev/null & echo $! > " +
-      shell_quoted(pid_file.string());
-  ASSERT_EQ(std::system(background.c_str()), 0);
-  for (int poll = 0; poll < 6000 && !fs::exists(checkpoint); ++poll)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint written";
-  std::string pid = read_file(pid_file);
-  pid.erase(pid.find_last_not_of(" \n") + 1);
-  ASSERT_EQ(std::system(("kill -9 " + pid + " 2>/dev/null; while kill -0 " + pid +
-                         " 2>/dev/null; do sleep 0.01; done")
-                            .c_str()),
-            0);
-  ASSERT_TRUE(fs::exists(checkpoint));
+  // started with a checkpoint after every step, killed once one is written
+  ASSERT_TRUE(run_brb_until_checkpoint(
+      "cyclic " + inputs + " --out " + shell_quoted(resumed.string()) + " --checkpoint " +
+          shell_quoted(checkpoint.string()) + " --checkpoint-every 1e-9",
+      checkpoint))
+      << "no checkpoint written";
   ASSERT_FALSE(fs::exists(resumed / "hysteresis.csv")) << "the run ended before it was killed";
 
   const CliRun taken_up = run_brb("cyclic " + inputs + " --out " + shell_quoted(resumed.string()) +

@@ -8,10 +8,12 @@
 #include <sys/wait.h>
 
 #include <charconv>
+#include <chrono>
 #include <cstdlib>
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <thread>
 #include <vector>
 
 namespace brb::testing {
@@ -50,6 +52,28 @@ inline CliRun run_brb(const std::string& arguments) {
   run.out = read_file(out);
   run.err = read_file(err);
   return run;
+}
+
+/// Starts `brb <arguments>` in the background and kills it (SIGKILL) as soon as `checkpoint`
+/// exists (the run writes it after a converged step), then waits until the process is gone:
+/// a run killed mid-way, for the checkpoint tests. False when no checkpoint appeared within a
+/// minute.
+inline bool run_brb_until_checkpoint(const std::string& arguments,
+                                     const std::filesystem::path& checkpoint) {
+  const ScratchDirectory scratch;
+  const auto pid_file = scratch.path() / "pid";
+  const std::string background = shell_quoted(BRB_CLI_PATH) + " " + arguments +
+                                 " >/dev/null 2>&1 </dev/null & echo $! > " +
+                                 shell_quoted(pid_file.string());
+  if (std::system(background.c_str()) != 0)
+    return false;
+  for (int poll = 0; poll < 6000 && !std::filesystem::exists(checkpoint); ++poll)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::string pid = read_file(pid_file);
+  pid.erase(pid.find_last_not_of(" \n") + 1);
+  const std::string kill =
+      "kill -9 " + pid + " 2>/dev/null; while kill -0 " + pid + " 2>/dev/null; do sleep 0.01; done";
+  return std::system(kill.c_str()) == 0 && std::filesystem::exists(checkpoint);
 }
 
 inline std::vector<std::string> lines_of(const std::string& text) {

@@ -8,18 +8,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <string>
-#include <thread>
 
 namespace {
 
 using brb::testing::CliRun;
 using brb::testing::read_file;
 using brb::testing::run_brb;
+using brb::testing::run_brb_until_checkpoint;
 using brb::testing::ScratchDirectory;
 using brb::testing::shell_quoted;
 using nlohmann::json;
@@ -226,21 +224,8 @@ TEST(ValidateCli, AKilledRunIsTakenUpFromItsCheckpointAndTheReportSaysSo) {
   ASSERT_TRUE(whole.exit_code == 0 || whole.exit_code == 1) << whole.err;
   const json whole_report = json::parse(read_file(folder / "report.json"));
 
-  const fs::path pid_file = scratch.path() / "pid";
-  const std::string background = shell_quoted(BRB_CLI_PATH) + arguments +
-                                 " >/dev/null 2>&1 </dev/null & echo $! > " +
-                                 shell_quoted(pid_file.string());
-  ASSERT_EQ(std::system(background.c_str()), 0);
-  for (int poll = 0; poll < 6000 && !fs::exists(checkpoint); ++poll)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint written";
-  std::string pid = read_file(pid_file);
-  pid.erase(pid.find_last_not_of(" \n") + 1);
-  ASSERT_EQ(std::system(("kill -9 " + pid + " 2>/dev/null; while kill -0 " + pid +
-                         " 2>/dev/null; do sleep 0.01; done")
-                            .c_str()),
-            0);
-  ASSERT_TRUE(fs::exists(checkpoint)) << "the run ended before it was killed";
+  ASSERT_TRUE(run_brb_until_checkpoint(arguments, checkpoint))
+      << "no checkpoint written, or the run ended before it was killed";
 
   const CliRun taken_up = run_brb(arguments);
   ASSERT_TRUE(taken_up.exit_code == 0 || taken_up.exit_code == 1) << taken_up.err;

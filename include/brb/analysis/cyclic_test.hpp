@@ -136,18 +136,18 @@ struct CyclicTestResult {
   double seconds_before_resume = 0.0;
 };
 
-/// Checkpoints of a long cyclic test (`brb cyclic --checkpoint`, `brb validate
-/// --checkpoint-dir`): the test's whole state is written to `file` (atomically) at most
-/// every `interval_seconds` of wall time after a converged step, and a run that finds the
-/// file takes up from it; the file is refused unless it was written for the same `run_key`
-/// (the caller's account of the input: brace and protocol files and settings) by this
-/// program's checkpoint format.
 /// What a checkpoint held besides the test's state.
 struct ResumedRun {
   int steps = 0;                ///< steps converged before it
   double elapsed_seconds = 0.0; ///< wall time of the run(s) that wrote it
 };
 
+/// Checkpoints of a long cyclic test (`brb cyclic --checkpoint`, `brb validate
+/// --checkpoint-dir`): the test's whole state is written to `file` (atomically) at most
+/// every `interval_seconds` of wall time after a converged step, and a run that finds the
+/// file takes up from it; the file is refused unless it was written for the same `run_key`
+/// (the caller's account of the input: brace and protocol files and settings) by this
+/// program's checkpoint format.
 struct CyclicCheckpoint {
   std::filesystem::path file;
   double interval_seconds = 600.0;
