@@ -488,11 +488,11 @@ void CasingContact::record_stress_work() {
 }
 
 void CasingContact::save_state(io::StateWriter& out) const {
-  out(committed_, expansion_, in_contact_, open_evaluations_);
+  out(*this);
 }
 
 void CasingContact::load_state(io::StateReader& in) {
-  in(committed_, expansion_, in_contact_, open_evaluations_);
+  in(*this);
   revert_to_committed();
 }
 

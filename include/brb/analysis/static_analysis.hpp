@@ -460,10 +460,10 @@ private:
   /// would be left by the next step's adaptive solve through a jump); the tangent is checked
   /// like try_increment's, for the last substep only.
   bool unstable_end_of_path(const PathSubstep& substep) const;
-
-  model::Model& model_;
   /// The fields save_state and load_state archive, in one list.
   template <class Archive, class Self> static void archive_committed(Archive& archive, Self& self);
+
+  model::Model& model_;
 
   NewtonSettings settings_;
   std::optional<std::pair<int, model::Dof>> displacement_control_;

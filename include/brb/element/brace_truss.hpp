@@ -42,12 +42,18 @@ public:
   void commit() override;
   void revert_to_committed() override;
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
-  void save_state(io::StateWriter& out) const override {
-    out(committed_, committed_strain_, committed_force_, committed_work_, deformation_);
-  }
+  void save_state(io::StateWriter& out) const override { out(*this); }
   void load_state(io::StateReader& in) override {
-    in(committed_, committed_strain_, committed_force_, committed_work_, deformation_);
+    in(*this);
     revert_to_committed();
+  }
+  /// Checkpoints (io/state_archive.hpp): the committed state; a reader follows with
+  /// revert_to_committed().
+  template <class Archive, class Self>
+  requires io::state_of<Self, BraceTruss>
+  friend void state_fields(Archive& archive, Self& truss) {
+    archive(truss.committed_, truss.committed_strain_, truss.committed_force_,
+            truss.committed_work_, truss.deformation_);
   }
   ElementEnergy energy() const override;
 

@@ -186,6 +186,13 @@ public:
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   void save_state(io::StateWriter& out) const override;
   void load_state(io::StateReader& in) override;
+  /// Checkpoints: the committed state, the expansion and the active-set bookkeeping; a reader
+  /// follows with revert_to_committed().
+  template <class Archive, class Self>
+  requires io::state_of<Self, CasingContact>
+  friend void state_fields(Archive& archive, Self& link) {
+    archive(link.committed_, link.expansion_, link.in_contact_, link.open_evaluations_);
+  }
   ElementEnergy energy() const override;
 
   /// Bearing force on the core per direction (N, along y and z, resisting) and friction (N;

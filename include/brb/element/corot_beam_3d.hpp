@@ -607,10 +607,16 @@ public:
   void commit() override { local_.commit(); }
   void revert_to_committed() override { local_.revert_to_committed(); }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
-  void save_state(io::StateWriter& out) const override { out(frame_, local_, local_force_); }
+  void save_state(io::StateWriter& out) const override { out(*this); }
   void load_state(io::StateReader& in) override {
-    in(frame_, local_, local_force_);
+    in(*this);
     local_.revert_to_committed();
+  }
+  /// Checkpoints: the frame, the local beam's committed state and the last local forces.
+  template <class Archive, class Self>
+  requires io::state_of<Self, CorotBeam3D>
+  friend void state_fields(Archive& archive, Self& beam) {
+    archive(beam.frame_, beam.local_, beam.local_force_);
   }
   ElementEnergy energy() const override { return local_.energy(); }
 

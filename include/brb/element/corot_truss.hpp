@@ -72,12 +72,17 @@ public:
     axial_force_ = committed_force_;
   }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
-  void save_state(io::StateWriter& out) const override {
-    out(committed_, committed_strain_, committed_force_, committed_work_);
-  }
+  void save_state(io::StateWriter& out) const override { out(*this); }
   void load_state(io::StateReader& in) override {
-    in(committed_, committed_strain_, committed_force_, committed_work_);
+    in(*this);
     revert_to_committed();
+  }
+  /// Checkpoints: the committed state; a reader follows with revert_to_committed().
+  template <class Archive, class Self>
+  requires io::state_of<Self, CorotTruss>
+  friend void state_fields(Archive& archive, Self& truss) {
+    archive(truss.committed_, truss.committed_strain_, truss.committed_force_,
+            truss.committed_work_);
   }
 
   ElementEnergy energy() const override {

@@ -71,10 +71,13 @@ public:
   void revert_to_committed() override {}
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   /// Elastic: no history; the last evaluation's frame, energy and axial force.
-  void save_state(io::StateWriter& out) const override {
-    out(frame_, stored_energy_, axial_force_);
+  void save_state(io::StateWriter& out) const override { out(*this); }
+  void load_state(io::StateReader& in) override { in(*this); }
+  template <class Archive, class Self>
+  requires io::state_of<Self, ElasticBeamColumn>
+  friend void state_fields(Archive& archive, Self& beam) {
+    archive(beam.frame_, beam.stored_energy_, beam.axial_force_);
   }
-  void load_state(io::StateReader& in) override { in(frame_, stored_energy_, axial_force_); }
   ElementEnergy energy() const override { return {stored_energy_, 0.0}; }
 
   BeamGeometry geometry() const { return geometry_; }

@@ -47,16 +47,18 @@ public:
   void commit() override;
   void revert_to_committed() override;
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
-  void save_state(io::StateWriter& out) const override {
-    for (const Channel& channel : channels_)
-      out(channel.committed);
-    out(deformation_, dof_force_, energy_);
-  }
+  void save_state(io::StateWriter& out) const override { out(*this); }
   void load_state(io::StateReader& in) override {
-    for (Channel& channel : channels_)
-      in(channel.committed);
-    in(deformation_, dof_force_, energy_);
+    in(*this);
     revert_to_committed();
+  }
+  /// Checkpoints: each channel's committed law state, then the last evaluation's outputs.
+  template <class Archive, class Self>
+  requires io::state_of<Self, UniaxialSpring>
+  friend void state_fields(Archive& archive, Self& spring) {
+    for (auto& channel : spring.channels_)
+      archive(channel.committed);
+    archive(spring.deformation_, spring.dof_force_, spring.energy_);
   }
   ElementEnergy energy() const override { return energy_; }
 

@@ -38,11 +38,12 @@ public:
   void revert_to_committed() override {}
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   /// Elastic: no history; the last evaluation's force, moment and energy.
-  void save_state(io::StateWriter& out) const override {
-    out(spring_force_, spring_moment_, stored_energy_);
-  }
-  void load_state(io::StateReader& in) override {
-    in(spring_force_, spring_moment_, stored_energy_);
+  void save_state(io::StateWriter& out) const override { out(*this); }
+  void load_state(io::StateReader& in) override { in(*this); }
+  template <class Archive, class Self>
+  requires io::state_of<Self, ZeroLengthSpring>
+  friend void state_fields(Archive& archive, Self& spring) {
+    archive(spring.spring_force_, spring.spring_moment_, spring.stored_energy_);
   }
   ElementEnergy energy() const override { return {stored_energy_, 0.0}; }
 

@@ -113,7 +113,7 @@ private:
       size(value.size());
       using Element = typename T::value_type;
       static_assert(!std::same_as<Element, bool>, "std::vector<bool> has no element references");
-      if constexpr (detail::plain_value<Element> && !std::same_as<Element, bool>)
+      if constexpr (detail::plain_value<Element>)
         raw(value.data(), sizeof(Element) * value.size());
       else
         for (const auto& element : value)
