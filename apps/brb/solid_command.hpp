@@ -19,6 +19,7 @@ struct SolidCommand {
   double time_per_deformation = 0.0;       ///< s/mm; 0: the run's default (20 T_1 per dy)
   double duration = 0.0;                   ///< s; 0: from time_per_deformation
   double min_excursion_time = 0.0;         ///< s; 0: no floor on an excursion's duration
+  double lateral_damping = 0.0;            ///< 1/s; 0: no lateral mass damping
   std::optional<int> threads;              ///< overrides the solid block's threads
   std::vector<int> snapshot_steps;         ///< hysteresis steps written as .vtu
   int snapshot_every = 0;                  ///< also every N-th step (0: off)

@@ -134,10 +134,11 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
       throw std::invalid_argument("solid brace run: a protocol deformation is not finite");
   if (!(settings.time_per_deformation >= 0.0) || !(settings.duration >= 0.0) ||
       !(settings.min_excursion_time >= 0.0) || settings.outputs_per_segment < 1 ||
-      !(settings.stable_step_safety > 0.0 && settings.stable_step_safety <= 1.0))
-    throw std::invalid_argument("solid brace run: time per deformation, duration and the "
-                                "shortest excursion time must be >= 0, outputs per segment "
-                                ">= 1, the step safety in (0, 1]");
+      !(settings.stable_step_safety > 0.0 && settings.stable_step_safety <= 1.0) ||
+      !(settings.lateral_damping >= 0.0) || !std::isfinite(settings.lateral_damping))
+    throw std::invalid_argument("solid brace run: time per deformation, duration, the "
+                                "shortest excursion time and the lateral damping must be >= 0, "
+                                "outputs per segment >= 1, the step safety in (0, 1]");
   // A floor on the excursions would lengthen the protocol past a total duration asked for.
   if (settings.duration > 0.0 && settings.min_excursion_time > 0.0)
     throw std::invalid_argument("solid brace run: a total duration and a shortest excursion "
@@ -219,7 +220,11 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     loading.prescribed.add(node, 0, 0.0);
   loading.history = [protocol](double t) { return protocol.at(t); };
 
-  SolidExplicit<SolidBody> solver(body, loading, {settings.stable_step_safety, 0.0});
+  // the lateral damping acts on y and z only: the axial loading is not slowed by it
+  SolidExplicit<SolidBody> solver(
+      body, loading,
+      {settings.stable_step_safety, 0.0, settings.lateral_damping, {false, true, true}});
+  run.lateral_damping = settings.lateral_damping;
   run.time_step = solver.time_step();
   run.nodes = body.node_count();
   run.elements = body.element_count();
@@ -239,6 +244,7 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
     r.hourglass = e.hourglass;
     r.contact_stored = e.interaction;
     r.friction = e.friction;
+    r.damping = e.damping;
     r.external = e.external;
     r.energy_error = e.relative_error();
     run.records.push_back(r);

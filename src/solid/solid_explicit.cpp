@@ -97,6 +97,14 @@ SolidExplicitSolver<Model>::SolidExplicitSolver(Model& model, SolidLoading loadi
     mass_[i] = lumped[free_dofs_[i]];
   for (std::size_t j = 0; j < inertias.size(); ++j)
     mass_[static_cast<Eigen::Index>(free_dofs_.size() + j)] = inertias[j];
+  if (!(settings.mass_damping >= 0.0) || !std::isfinite(settings.mass_damping))
+    throw std::invalid_argument("solid explicit: the mass damping alpha must be finite and >= 0 "
+                                "(1/s), got " +
+                                std::to_string(settings.mass_damping));
+  damping_ = Eigen::VectorXd::Zero(mass_.size());
+  for (std::size_t i = 0; i < free_dofs_.size(); ++i)
+    if (settings.damped_directions[static_cast<std::size_t>(free_dofs_[i] % 3)])
+      damping_[static_cast<Eigen::Index>(i)] = settings.mass_damping * mass_[i];
   stable_step_ = model_.stable_time_step(settings.stable_step_safety);
   time_step_ = settings.time_step > 0.0 ? settings.time_step : stable_step_;
   if (time_step_ > stable_step_ * (1.0 + 1e-12))
@@ -162,6 +170,11 @@ void SolidExplicitSolver<Model>::set_initial_state(const Eigen::VectorXd& displa
     throw std::invalid_argument("solid explicit: the initial state cannot be evaluated: " + reason);
   model_.commit();
   accelerations(force_, time_, acceleration_);
+  // the damping force of the initial velocity (state vector: free DOFs, then the angles at rest)
+  for (std::size_t i = 0; i < free_dofs_.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    acceleration_[k] -= damping_[k] * velocity_[free_dofs_[i]] / mass_[k];
+  }
   energy_ = {};
   for (std::size_t i = 0; i < free_dofs_.size(); ++i)
     energy_.kinetic += 0.5 * mass_[i] * velocity_[free_dofs_[i]] * velocity_[free_dofs_[i]];
@@ -185,6 +198,9 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
   Eigen::VectorXd full = displacement_;
   Eigen::VectorXd force;
   bool evaluated = true;
+  // mass damping at v_{n+1}, solved per equation (header): the half-step velocity it starts from
+  const bool damped = damping_.any();
+  const Eigen::VectorXd half_step_velocity = v + 0.5 * dt * acceleration_;
   const auto system = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& /*v*/,
                           Eigen::VectorXd& a, double t) {
     for (Eigen::Index i = 0; i < free_count; ++i)
@@ -204,6 +220,9 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
       return;
     }
     accelerations(force, t, a);
+    if (damped)
+      a = (mass_.cwiseProduct(a) - damping_.cwiseProduct(half_step_velocity))
+              .cwiseQuotient(mass_ + 0.5 * dt * damping_);
   };
   Stepper stepper;
   Eigen::VectorXd q_new(m), v_new(m), a_new(m);
@@ -235,6 +254,9 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
     for (int dof : free_dofs_)
       work += 0.5 * (before + after) * loading_.load[dof] * increment[dof];
   }
+  // the damping forces' work, trapezoidal: c v_n at the start, c v_{n+1} at the end
+  if (damped)
+    energy_.damping += 0.5 * (damping_.cwiseProduct(v + v_new)).dot(q_new - q);
   model_.commit();
   energy_.external += work;
   take_model_energies();

@@ -302,9 +302,15 @@ RecordReference read_record(const JsonValue& value, const fs::path& directory,
     const fs::path summary = run / "summary.json";
     if (fs::is_regular_file(summary)) {
       const nlohmann::json document = io::read_json_file(summary);
-      const nlohmann::json::json_pointer seconds("/solid/run_seconds");
-      if (document.contains(seconds) && document.at(seconds).is_number())
-        record.run_seconds = document.at(seconds).get<double>();
+      const auto number = [&](const char* pointer) -> std::optional<double> {
+        const nlohmann::json::json_pointer path(pointer);
+        if (document.contains(path) && document.at(path).is_number())
+          return document.at(path).get<double>();
+        return std::nullopt;
+      };
+      record.run_seconds = number("/solid/run_seconds");
+      record.max_kinetic_over_internal = number("/solid/max_kinetic_over_internal");
+      record.max_hourglass_over_internal = number("/solid/max_hourglass_over_internal");
     }
     break;
   }

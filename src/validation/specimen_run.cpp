@@ -255,8 +255,38 @@ PreparedSpecimen prepare_specimen(Specimen specimen) {
   return prepared;
 }
 
+std::vector<CheckResult> reference_checks(const RecordReference& reference) {
+  std::vector<CheckResult> checks;
+  const auto ratio_check = [&](const char* name, const char* kind,
+                               const std::optional<double>& ratio, const char* field) {
+    if (!ratio)
+      return;
+    CheckResult check;
+    check.name = name;
+    check.kind = kind;
+    check.unit = "-";
+    check.value = *ratio;
+    check.at_most = kQuasiStaticRatioLimit;
+    check.status = *ratio <= kQuasiStaticRatioLimit ? CheckStatus::pass : CheckStatus::fail;
+    check.note = std::string("the reference run's summary.json ") + field;
+    check.source = "automatic: issue 6 acceptance (< 5 % of the internal energy throughout every "
+                   "validation run)";
+    checks.push_back(std::move(check));
+  };
+  if (reference.type == ReferenceType::solid_run) {
+    ratio_check("3D reference: largest kinetic over internal energy", "reference_kinetic_ratio",
+                reference.max_kinetic_over_internal, "solid.max_kinetic_over_internal");
+    ratio_check("3D reference: largest hourglass over internal energy", "reference_hourglass_ratio",
+                reference.max_hourglass_over_internal, "solid.max_hourglass_over_internal");
+  }
+  return checks;
+}
+
 std::vector<CheckResult> evaluate_checks(const Specimen& specimen, const RunData& run) {
   std::vector<CheckResult> checks = automatic_checks(run.result);
+  if (specimen.record)
+    for (CheckResult& check : reference_checks(*specimen.record))
+      checks.push_back(std::move(check));
   for (const MetricSpec& metric : specimen.metrics) {
     const MetricKind* kind = find_metric_kind(metric.kind);
     checks.push_back(judge(metric, kind->evaluate(metric.parameters, run)));

@@ -154,8 +154,9 @@ TEST(SolidCli, BareBarFollowsTheUniaxialLawAndWritesTheCyclicFiles) {
   EXPECT_LT(balance["relative_error"].get<double>(), 1e-3);
 
   const auto energy_lines = lines_of(read_file(files.out / "energies.csv"));
-  EXPECT_EQ(energy_lines.front(), "step,time,explicit_steps,deformation,force,kinetic,internal,"
-                                  "hourglass,contact_stored,friction,external,energy_error");
+  EXPECT_EQ(energy_lines.front(),
+            "step,time,explicit_steps,deformation,force,kinetic,internal,"
+            "hourglass,contact_stored,friction,damping,external,energy_error");
   EXPECT_EQ(energy_lines.size(), lines.size());
 }
 
@@ -249,6 +250,32 @@ TEST(SolidCli, TheShortestExcursionTimeIsKeptInTheSummaryAndExcludesADuration) {
   EXPECT_EQ(refused.exit_code, 2) << refused.out << refused.err;
   EXPECT_NE(refused.err.find("--min-excursion-time"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(both.out));
+}
+
+TEST(SolidCli, TheLateralDampingAndItsEnergyAreReported) {
+  // The bare bar's only lateral motion is its Poisson contraction: the damping takes a small
+  // positive energy, which summary.json reports beside alpha, as the energy balance's
+  // released_in_jumps, and energies.csv per record; a negative alpha is a usage error.
+  const SolidFiles files(bar_brace());
+  const CliRun run = run_brb(files.arguments("--lateral-damping 20000"));
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("lateral damping 2e+04 1/s took"), std::string::npos) << run.out;
+  const json summary = json::parse(read_file(files.out / "summary.json"));
+  const json& solid = summary["solid"];
+  EXPECT_EQ(solid["lateral_damping_per_s"].get<double>(), 20000.0);
+  const double damping = solid["damping_energy_N_mm"].get<double>();
+  EXPECT_GT(damping, 0.0);
+  EXPECT_LT(solid["damping_energy_over_external_work"].get<double>(), 1e-2);
+  EXPECT_EQ(summary["energy_balance"]["released_in_jumps"].get<double>(), damping);
+  EXPECT_LT(summary["energy_balance"]["relative_error"].get<double>(), 1e-3);
+  const auto energy_lines = lines_of(read_file(files.out / "energies.csv"));
+  EXPECT_NEAR(numbers_of(energy_lines.back())[10], damping, 1e-9 * damping);
+
+  const SolidFiles negative(bar_brace());
+  const CliRun refused = run_brb(negative.arguments("--lateral-damping -1"));
+  EXPECT_EQ(refused.exit_code, 2) << refused.out << refused.err;
+  EXPECT_NE(refused.err.find("--lateral-damping"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(negative.out));
 }
 
 TEST(SolidCli, ABadSolidBlockIsAnInputErrorAndNothingIsWritten) {

@@ -288,6 +288,47 @@ TEST_F(ReferenceTypes, SolidRunKeepsItsRunTimeForTheReport) {
   EXPECT_FALSE(untimed.record->run_seconds.has_value());
 }
 
+TEST_F(ReferenceTypes, ASolidRunsQuasiStaticCheckIsJudgedFromItsSummary) {
+  // Issue 6: KE and hourglass energy below 5 % of the internal energy throughout every
+  // validation run of the 3D model. The run's summary.json gives its largest ratios; brb
+  // validate checks them (automatic checks of the reference): 0.08 fails, 0.01 passes.
+  write_solid_run("solid_dynamic");
+  json summary = json::parse(read_file(root() / "solid_dynamic" / "summary.json"));
+  summary["solid"] = {{"max_kinetic_over_internal", 0.08}, {"max_hourglass_over_internal", 0.01}};
+  scratch_->write("solid_dynamic/summary.json", summary.dump(2));
+  const json reference = {{"type", "solid_run"},
+                          {"directory", "../solid_dynamic"},
+                          {"failure", failure_of(model_failure())}};
+  const Specimen dynamic = brb::validation::read_specimen(
+      write_specimen("dynamic_solid", reference, every_metric(1.0)), root());
+  ASSERT_TRUE(dynamic.record.has_value());
+  const std::vector<CheckResult> checks = brb::validation::reference_checks(*dynamic.record);
+  ASSERT_EQ(checks.size(), 2u);
+  EXPECT_EQ(checks[0].kind, "reference_kinetic_ratio");
+  EXPECT_EQ(*checks[0].value, 0.08);
+  EXPECT_EQ(*checks[0].at_most, brb::validation::kQuasiStaticRatioLimit);
+  EXPECT_EQ(checks[0].status, CheckStatus::fail);
+  EXPECT_EQ(checks[1].kind, "reference_hourglass_ratio");
+  EXPECT_EQ(checks[1].status, CheckStatus::pass);
+  // and they are among the specimen's checks, after the run's automatic ones
+  const PreparedSpecimen prepared = brb::validation::prepare_specimen(dynamic);
+  const RunData data{run().result, run().yield_deformation, run().yield_force,
+                     run().yielding_length, &*prepared.record};
+  const std::vector<CheckResult> all = brb::validation::evaluate_checks(prepared.specimen, data);
+  ASSERT_GT(all.size(), 5u);
+  EXPECT_EQ(all[3].kind, "reference_kinetic_ratio");
+  EXPECT_EQ(all[4].kind, "reference_hourglass_ratio");
+
+  // a summary without the ratios (or another reference type) adds no check
+  write_solid_run("solid_plain");
+  const json plain_reference = {{"type", "solid_run"},
+                                {"directory", "../solid_plain"},
+                                {"failure", failure_of(model_failure())}};
+  const Specimen plain = brb::validation::read_specimen(
+      write_specimen("plain_solid", plain_reference, every_metric(1.0)), root());
+  EXPECT_TRUE(brb::validation::reference_checks(*plain.record).empty());
+}
+
 TEST_F(ReferenceTypes, SolverCsvInKilonewtonsAndInchesGivesZeroErrorForEveryMetric) {
   // Reference (construction): the same history written in kN and inches with renamed
   // columns. Converting to kN and inches and back rounds each number by at most an ulp or

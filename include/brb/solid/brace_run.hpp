@@ -69,6 +69,10 @@ struct SolidBraceRunSettings {
   double min_excursion_time = 0.0;
   int outputs_per_segment = 20;    ///< records per protocol segment (>= 1)
   double stable_step_safety = 0.9; ///< on the body's stable step
+  /// alpha (1/s, >= 0; 0: none) of a mass-proportional damping of the nodes' lateral (y, z)
+  /// motion (solid_explicit.hpp): it calms a dynamic snap (global buckling, loose pieces of
+  /// split mortar) without resisting the axial loading; its work is the records' `damping`.
+  double lateral_damping = 0.0;
 };
 
 /// One output step.
@@ -82,6 +86,7 @@ struct SolidBraceRecord {
   double kinetic = 0.0, internal = 0.0, hourglass = 0.0; ///< N mm
   double contact_stored = 0.0; ///< energy stored in the interactions' springs (N mm)
   double friction = 0.0;       ///< energy dissipated by friction (N mm)
+  double damping = 0.0;        ///< energy dissipated by the lateral damping (N mm)
   double external = 0.0;       ///< work of the driven face (N mm)
   double energy_error = 0.0;   ///< SolidExplicitEnergy::relative_error
 };
@@ -96,6 +101,7 @@ struct SolidBraceRun {
   double first_axial_period = 0.0;   ///< T_1 of the header (s)
   double time_per_deformation = 0.0; ///< s/mm used
   double min_excursion_time = 0.0;   ///< s used (0: none)
+  double lateral_damping = 0.0;      ///< 1/s used (0: none)
 };
 
 class SolidBody;

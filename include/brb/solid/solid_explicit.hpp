@@ -14,8 +14,21 @@
 // in its interactions' springs and dissipated by their friction; external work trapezoidal in
 // the displacements: the reactions (internal plus interaction forces) of the prescribed DOFs
 // times their increments plus the external forces times the free DOFs' increments. The
-// balance W_ext = KE + IE + HG + interaction + friction holds up to the central-difference
-// error O(dt^2).
+// balance W_ext = KE + IE + HG + interaction + friction + damping holds up to the
+// central-difference error O(dt^2).
+//
+// Mass-proportional damping (optional, SolidExplicitSettings::mass_damping alpha, 1/s, on the
+// directions chosen: `brb solid --lateral-damping` damps y and z only, as LS-DYNA's
+// *DAMPING_GLOBAL with its per-direction factors). The force c_i v_i, c_i = alpha m_i, is
+// diagonal, so it is taken at v_{n+1} = v_{n+1/2} + dt/2 a_{n+1} and solved per equation,
+//   (m_i + c_i dt/2) a_i = f_i - c_i v_{n+1/2,i},   v_{n+1/2} = v_n + dt/2 a_n,
+// as analysis::ExplicitAnalysis does (Belytschko, Liu, Moran, Box 6.1): second-order, and the
+// stable step 2 / w_max is not lowered. A mode of frequency w gets the damping ratio
+// alpha / (2 w): the low lateral modes of a buckling brace the most, the axial waves of the
+// loading nothing. Its work, trapezoidal (1/2 (c v_n + c v_{n+1}) . dq), is the energy
+// `damping`. It regularises a dynamic snap (global buckling, pieces of split mortar that nothing
+// holds any more) toward the quasi-static path, at the price of a viscous force alpha m v on
+// the slow lateral motions of the loading: report the damping energy beside the result.
 //
 // The solver is a template on the model (SolidExplicitSolver<Model>, Model = SolidModel<Law>
 // or SolidBody, instantiated for both); SolidExplicit<T> names it for a law (SolidModel<T>),
@@ -42,6 +55,11 @@ double smooth_ramp(double time, double duration);
 struct SolidExplicitSettings {
   double stable_step_safety = 0.9; ///< on the element bound 2 / w_max
   double time_step = 0.0;          ///< s; 0: the stable step (a larger one is refused)
+  /// alpha of the mass-proportional damping C = alpha M (1/s, >= 0; 0: none; see the header).
+  double mass_damping = 0.0;
+  /// The directions (x, y, z) of the nodes' DOFs that the damping acts on (DOF 3 n + k is
+  /// damped when damped_directions[k]); a pivoting face's angles are never damped.
+  std::array<bool, 3> damped_directions{true, true, true};
 };
 
 /// A face that stays plane and may rotate freely about the two axes across x through its
@@ -75,9 +93,13 @@ struct SolidExplicitEnergy {
   double hourglass = 0.0;   ///< stored hourglass energy
   double interaction = 0.0; ///< energy stored in the interactions' springs (SolidBody)
   double friction = 0.0;    ///< energy dissipated by the interactions' friction (SolidBody)
+  double damping = 0.0;     ///< energy dissipated by the mass-proportional damping
   double external = 0.0;    ///< work of the reactions and external forces
-  /// The energy the model holds or has dissipated: KE + IE + HG + interaction + friction.
-  double accounted() const { return kinetic + internal + hourglass + interaction + friction; }
+  /// The energy the model holds or has dissipated: KE + IE + HG + interaction + friction +
+  /// damping.
+  double accounted() const {
+    return kinetic + internal + hourglass + interaction + friction + damping;
+  }
   /// |W_ext - accounted| / max(W_ext, accounted, 1e-30)
   double relative_error() const;
 };
@@ -89,7 +111,8 @@ public:
   SolidExplicitSolver(Model& model, SolidLoading loading, SolidExplicitSettings settings = {});
 
   /// Starts from displacement u0 and velocity v0 (full DOF vectors; the prescribed DOFs take
-  /// their history's values). The energies start from the state's stored energy as work done.
+  /// their history's values). The energies start from the state's stored energy as work done
+  /// (the damping energy from 0).
   void set_initial_state(const Eigen::VectorXd& displacement, const Eigen::VectorXd& velocity);
 
   /// Steps up to `time` (s), the last step shortened to land on it. False, with `failure`,
@@ -129,7 +152,8 @@ private:
   SolidLoading loading_;
   std::vector<int> free_dofs_;
   std::vector<Pivot> pivots_;
-  Eigen::VectorXd mass_; // free DOFs, then the pivots' inertias (two per face)
+  Eigen::VectorXd mass_;    // free DOFs, then the pivots' inertias (two per face)
+  Eigen::VectorXd damping_; // c_i = alpha m_i of the damped free DOFs, else 0 (as mass_)
   double stable_step_ = 0.0;
   double time_step_ = 0.0;
   double time_ = 0.0;

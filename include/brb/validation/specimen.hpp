@@ -84,7 +84,16 @@ struct RecordReference {
   /// directory has one), which the report sets against the model's run time (issue 6: both run
   /// times and their ratio).
   std::optional<double> run_seconds;
+  /// solid_run: the 3D run's quasi-static check (its summary.json's
+  /// solid.max_kinetic_over_internal and solid.max_hourglass_over_internal, when written),
+  /// which brb validate checks against issue 6's 0.05 (kQuasiStaticRatioLimit).
+  std::optional<double> max_kinetic_over_internal;
+  std::optional<double> max_hourglass_over_internal;
 };
+
+/// Issue 6: kinetic energy and hourglass energy below 5 % of the internal energy throughout
+/// every validation run of the 3D model.
+inline constexpr double kQuasiStaticRatioLimit = 0.05;
 
 struct Specimen {
   std::string id; ///< the folder's name; metrics.json's "id" must equal it

@@ -54,6 +54,11 @@ CheckResult judge(const MetricSpec& metric, const MetricValue& value);
 /// error is at most energy_balance_tolerance.
 std::vector<CheckResult> automatic_checks(const analysis::CyclicTestResult& result);
 
+/// The checks of a reference itself: for a `brb solid` run, its largest kinetic and hourglass
+/// energies over the internal energy (its summary.json) at most kQuasiStaticRatioLimit, issue
+/// 6's quasi-static check (none when the summary does not give them).
+std::vector<CheckResult> reference_checks(const RecordReference& reference);
+
 /// The brace with every zone's element count (core, transition, connection; the casing
 /// follows the core) multiplied by `refinement` (>= 1).
 model::BraceSpec refined(const model::BraceSpec& spec, int refinement);
