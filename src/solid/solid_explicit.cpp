@@ -101,10 +101,14 @@ SolidExplicitSolver<Model>::SolidExplicitSolver(Model& model, SolidLoading loadi
     throw std::invalid_argument("solid explicit: the mass damping alpha must be finite and >= 0 "
                                 "(1/s), got " +
                                 std::to_string(settings.mass_damping));
-  damping_ = Eigen::VectorXd::Zero(mass_.size());
-  for (std::size_t i = 0; i < free_dofs_.size(); ++i)
-    if (settings.damped_directions[static_cast<std::size_t>(free_dofs_[i] % 3)])
-      damping_[static_cast<Eigen::Index>(i)] = settings.mass_damping * mass_[i];
+  // empty without damping, so that an undamped step does none of its work
+  const auto& directions = settings.damped_directions;
+  if (settings.mass_damping > 0.0 && (directions[0] || directions[1] || directions[2])) {
+    damping_ = Eigen::VectorXd::Zero(mass_.size());
+    for (std::size_t i = 0; i < free_dofs_.size(); ++i)
+      if (directions[static_cast<std::size_t>(free_dofs_[i] % 3)])
+        damping_[static_cast<Eigen::Index>(i)] = settings.mass_damping * mass_[i];
+  }
   stable_step_ = model_.stable_time_step(settings.stable_step_safety);
   time_step_ = settings.time_step > 0.0 ? settings.time_step : stable_step_;
   if (time_step_ > stable_step_ * (1.0 + 1e-12))
@@ -171,9 +175,11 @@ void SolidExplicitSolver<Model>::set_initial_state(const Eigen::VectorXd& displa
   model_.commit();
   accelerations(force_, time_, acceleration_);
   // the damping force of the initial velocity (state vector: free DOFs, then the angles at rest)
-  for (std::size_t i = 0; i < free_dofs_.size(); ++i) {
-    const auto k = static_cast<Eigen::Index>(i);
-    acceleration_[k] -= damping_[k] * velocity_[free_dofs_[i]] / mass_[k];
+  if (damping_.size() != 0) {
+    for (std::size_t i = 0; i < free_dofs_.size(); ++i) {
+      const auto k = static_cast<Eigen::Index>(i);
+      acceleration_[k] -= damping_[k] * velocity_[free_dofs_[i]] / mass_[k];
+    }
   }
   energy_ = {};
   for (std::size_t i = 0; i < free_dofs_.size(); ++i)
@@ -199,8 +205,10 @@ template <class Model> bool SolidExplicitSolver<Model>::advance(double dt, std::
   Eigen::VectorXd force;
   bool evaluated = true;
   // mass damping at v_{n+1}, solved per equation (header): the half-step velocity it starts from
-  const bool damped = damping_.any();
-  const Eigen::VectorXd half_step_velocity = v + 0.5 * dt * acceleration_;
+  const bool damped = damping_.size() != 0;
+  Eigen::VectorXd half_step_velocity;
+  if (damped)
+    half_step_velocity = v + 0.5 * dt * acceleration_;
   const auto system = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& /*v*/,
                           Eigen::VectorXd& a, double t) {
     for (Eigen::Index i = 0; i < free_count; ++i)

@@ -153,7 +153,8 @@ private:
   std::vector<int> free_dofs_;
   std::vector<Pivot> pivots_;
   Eigen::VectorXd mass_;    // free DOFs, then the pivots' inertias (two per face)
-  Eigen::VectorXd damping_; // c_i = alpha m_i of the damped free DOFs, else 0 (as mass_)
+  Eigen::VectorXd damping_; // c_i = alpha m_i of the damped free DOFs, else 0 (as mass_);
+                            // empty without damping
   double stable_step_ = 0.0;
   double time_step_ = 0.0;
   double time_ = 0.0;
