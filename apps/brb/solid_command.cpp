@@ -100,6 +100,9 @@ nlohmann::ordered_json solid_block(const SolidCommand& command, const model::Sol
   block["half_length"] = mesh.half_length;
   block["end_faces"] = model::end_faces_name(mesh.end_faces);
   block["mass_scaling"] = mesh.mass_scaling;
+  block["hourglass"] = model::hourglass_name(mesh.hourglass);
+  if (mesh.hourglass == model::SolidHourglass::tangent)
+    block["hourglass_min_scale"] = mesh.hourglass_min_scale;
   block["threads"] = command.threads.value_or(mesh.threads);
   block["time_step_s"] = run.time_step;
   block["explicit_steps"] = run.steps;

@@ -437,10 +437,10 @@ model::ElementSpec read_element(const JsonValue& object) {
 model::SolidMeshSpec read_solid(const JsonValue& object) {
   object.expect_object({"elements_across_core", "axial_element_size", "elements_through_mortar",
                         "half_length", "tube", "end_faces", "steel_density", "mortar_density",
-                        "mass_scaling", "threads"},
+                        "mass_scaling", "threads", "hourglass", "hourglass_min_scale"},
                        "a solid object {elements_across_core, axial_element_size, "
                        "elements_through_mortar, half_length, tube, end_faces, steel_density, "
-                       "mortar_density, mass_scaling, threads}");
+                       "mortar_density, mass_scaling, threads, hourglass, hourglass_min_scale}");
   model::SolidMeshSpec solid;
   const auto count = [&](std::string_view key, std::string_view meaning, int& value) {
     if (const auto found = object.find(key))
@@ -478,6 +478,16 @@ model::SolidMeshSpec read_solid(const JsonValue& object) {
                            "got " +
                            describe_json_value(found->json()) + ")");
     }
+  }
+  if (const auto hourglass = object.find("hourglass")) {
+    solid.hourglass =
+        one_of<model::SolidHourglass>(*hourglass, "hourglass control", model::kSolidHourglassNames);
+  }
+  if (const auto floor = object.find("hourglass_min_scale")) {
+    solid.hourglass_min_scale = floor->number("floor of the tangent hourglass stiffness scale");
+    if (!(solid.hourglass_min_scale > 0.0 && solid.hourglass_min_scale <= 1.0))
+      throw floor->error("the hourglass stiffness floor must be in (0, 1] (default 0.05; got " +
+                         describe_json_value(floor->json()) + ")");
   }
   if (const auto scaling = object.find("mass_scaling")) {
     solid.mass_scaling = scaling->number("mass scaling factor on the densities");

@@ -14,6 +14,14 @@ std::string_view end_faces_name(SolidEndFaces faces) {
   return "unknown";
 }
 
+std::string_view hourglass_name(SolidHourglass hourglass) {
+  for (const auto& [name, value] : kSolidHourglassNames) {
+    if (value == hourglass)
+      return name;
+  }
+  return "unknown";
+}
+
 section::FiberLayout SectionSpec::mesh() const {
   switch (shape) {
   case SectionShape::rectangle:

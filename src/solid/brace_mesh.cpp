@@ -185,6 +185,8 @@ void validate_solid_spec(const model::SolidMeshSpec& solid) {
         "must be >= 1 (a factor on the densities)");
   check(solid.threads >= 1 && solid.threads <= 1024, "solid/threads",
         "must be a whole number >= 1");
+  check(solid.hourglass_min_scale > 0.0 && solid.hourglass_min_scale <= 1.0,
+        "solid/hourglass_min_scale", "must be in (0, 1] (default 0.05)");
 }
 
 /// The core's section grid (base size, unscaled) and its lines.

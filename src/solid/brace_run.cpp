@@ -149,11 +149,13 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
 
   SolidBody body(mesh.nodes);
   const double steel_density = solid.steel_density * solid.mass_scaling;
-  body.add_part(
-      "core",
-      SolidModel<Steel>(
-          mesh.core.mesh, [&](double lc) { return Steel(brace.steel, lc); }, steel_density),
-      mesh.core.global_nodes);
+  const HourglassControl hourglass{solid.hourglass == model::SolidHourglass::tangent,
+                                   solid.hourglass_min_scale};
+  body.add_part("core",
+                SolidModel<Steel>(
+                    mesh.core.mesh, [&](double lc) { return Steel(brace.steel, lc); },
+                    steel_density, hourglass),
+                mesh.core.global_nodes);
   if (brace.casing) {
     const model::CasingSpec& casing = *brace.casing;
     casing.mortar.validate();
@@ -161,14 +163,14 @@ SolidBraceRun run_solid_brace(const model::BraceSpec& brace,
       body.add_part("mortar",
                     SolidModel<Mortar>(
                         mesh.mortar.mesh, [&](double lc) { return Mortar(casing.mortar, lc); },
-                        solid.mortar_density * solid.mass_scaling),
+                        solid.mortar_density * solid.mass_scaling, hourglass),
                     mesh.mortar.global_nodes);
     if (!mesh.tube.empty()) {
       casing.tube_steel.validate();
       body.add_part("tube",
                     SolidModel<Steel>(
                         mesh.tube.mesh, [&](double lc) { return Steel(casing.tube_steel, lc); },
-                        steel_density),
+                        steel_density, hourglass),
                     mesh.tube.global_nodes);
     }
     if (!mesh.stopper_core.empty())

@@ -172,33 +172,33 @@ void add_hex8_centre_response(const Hex8Reference& reference, const Eigen::Matri
   }
 }
 
-double add_hex8_hourglass_response(const Hex8Reference& reference,
-                                   const HourglassStiffness& stiffness, const Eigen::Matrix3d& F,
-                                   const NodeMatrix& displacement, NodeMatrix& force,
-                                   ElementMatrix* tangent) {
+HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
+                                             const Eigen::Matrix3d& F,
+                                             const NodeMatrix& displacement) {
+  const HourglassMatrix g = displacement * reference.hourglass.transpose();
+  return F.inverse() * g;
+}
+
+void add_hex8_hourglass_forces(const Hex8Reference& reference, const HourglassStiffness& stiffness,
+                               double stiffness_scale, const Eigen::Matrix3d& F,
+                               const HourglassMatrix& q, const HourglassMatrix& P,
+                               NodeMatrix& force, ElementMatrix* tangent) {
   const Eigen::Matrix3d F_inverse = F.inverse();
   const Eigen::Matrix3d F_inverse_t = F_inverse.transpose();
   const NodeMatrix& b = reference.gradients;
-  // g_alpha = sum_a gamma_alpha,a x_a = sum_a gamma_alpha,a u_a, q_alpha = F^-1 g_alpha,
-  // p_alpha = F^-T K_alpha q_alpha
-  const Eigen::Matrix<double, 3, 4> g = displacement * reference.hourglass.transpose();
-  const Eigen::Matrix<double, 3, 4> q = F_inverse * g;
-  Eigen::Matrix<double, 3, 4> Kq, p;
-  double energy = 0.0;
-  for (int alpha = 0; alpha < 4; ++alpha) {
-    Kq.col(alpha) = stiffness[alpha] * q.col(alpha);
-    p.col(alpha) = F_inverse_t * Kq.col(alpha);
-    energy += 0.5 * q.col(alpha).dot(Kq.col(alpha));
-  }
+  const HourglassMatrix p = F_inverse_t * P; // p_alpha = F^-T P_alpha
   // dq_alpha = F^-1 sum_b c_alpha,b dx_b with c_alpha,b = gamma_alpha,b - b_b . q_alpha
   const Eigen::Matrix<double, 4, 8> c = reference.hourglass - q.transpose() * b;
   force.noalias() += p * c; // f_b = sum_alpha c_alpha,b p_alpha
   if (tangent == nullptr)
-    return energy;
+    return;
+  // d f_b / d x_c = c_b c_c F^-T (dP/dq) F^-1  (the stresses' own change)
+  //               - c_c p (F^-T b_b)^T         (c_alpha,b moves with q_alpha)
+  //               - c_b (F^-T b_c) p^T         (F^-T moves with F)
   const NodeMatrix Fb = F_inverse_t * b; // F^-T b_b
   for (int alpha = 0; alpha < 4; ++alpha) {
     const Eigen::Vector3d pa = p.col(alpha);
-    const Eigen::Matrix3d KF = F_inverse_t * stiffness[alpha] * F_inverse;
+    const Eigen::Matrix3d KF = stiffness_scale * F_inverse_t * stiffness[alpha] * F_inverse;
     for (int bb = 0; bb < 8; ++bb) {
       for (int cc = 0; cc < 8; ++cc) {
         const double cb = c(alpha, bb);
@@ -209,6 +209,20 @@ double add_hex8_hourglass_response(const Hex8Reference& reference,
       }
     }
   }
+}
+
+double add_hex8_hourglass_response(const Hex8Reference& reference,
+                                   const HourglassStiffness& stiffness, const Eigen::Matrix3d& F,
+                                   const NodeMatrix& displacement, NodeMatrix& force,
+                                   ElementMatrix* tangent) {
+  const HourglassMatrix q = hex8_hourglass_displacements(reference, F, displacement);
+  HourglassMatrix P;
+  double energy = 0.0;
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    P.col(alpha) = stiffness[alpha] * q.col(alpha);
+    energy += 0.5 * q.col(alpha).dot(P.col(alpha));
+  }
+  add_hex8_hourglass_forces(reference, stiffness, 1.0, F, q, P, force, tangent);
   return energy;
 }
 

@@ -45,16 +45,22 @@ NodeMatrix gather(const HexConnectivity& nodes, const Eigen::Matrix3Xd& field) {
 } // namespace
 
 template <class Law>
-SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_for, double density)
-    : mesh_(std::move(mesh)), density_(density) {
+SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_for, double density,
+                            HourglassControl hourglass)
+    : mesh_(std::move(mesh)), density_(density), hourglass_control_(hourglass) {
   if (!(density > 0.0) || !std::isfinite(density))
     throw std::invalid_argument("solid model: density must be finite and > 0 tonne/mm^3 (got " +
                                 std::to_string(density) + ")");
+  if (!(hourglass.min_scale > 0.0 && hourglass.min_scale <= 1.0))
+    throw std::invalid_argument("solid model: the hourglass stiffness floor must be in (0, 1] "
+                                "(got " +
+                                std::to_string(hourglass.min_scale) + ")");
   const std::size_t n = mesh_.elements.size();
   laws_.reserve(n);
   references_.reserve(n);
   hourglass_.reserve(n);
   dilatational_modulus_.reserve(n);
+  shear_modulus_.reserve(n);
   for (std::size_t e = 0; e < n; ++e) {
     try {
       references_.push_back(hex8_reference(gather(mesh_.elements[e], mesh_.nodes)));
@@ -69,7 +75,15 @@ SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_
         moduli.youngs * moduli.poisson / ((1.0 + moduli.poisson) * (1.0 - 2.0 * moduli.poisson));
     hourglass_.push_back(hex8_hourglass_stiffness(references_.back(), moduli.youngs, shear));
     dilatational_modulus_.push_back(lambda + 2.0 * shear);
+    shear_modulus_.push_back(shear);
     committed_states_.push_back(laws_.back().initial_state());
+  }
+  hourglass_scale_.assign(n, 1.0);
+  if (hourglass_control_.follow_tangent) {
+    committed_hourglass_q_.assign(n, HourglassMatrix::Zero());
+    trial_hourglass_q_ = committed_hourglass_q_;
+    committed_hourglass_P_ = committed_hourglass_q_;
+    trial_hourglass_P_ = committed_hourglass_q_;
   }
   trial_states_ = committed_states_;
   committed_stress_.assign(n, material::Vector6::Zero());
@@ -111,8 +125,22 @@ bool SolidModel<Law>::evaluate_element(std::size_t e, const Eigen::Matrix3Xd& u,
     tangent->setZero();
   }
   add_hex8_centre_response(reference, F, response.stress, response.tangent, force, tangent);
-  element_hourglass_[e] = add_hex8_hourglass_response(reference, hourglass_[e], F,
-                                                      element_displacement, force, tangent);
+  if (!hourglass_control_.follow_tangent) {
+    element_hourglass_[e] = add_hex8_hourglass_response(reference, hourglass_[e], F,
+                                                        element_displacement, force, tangent);
+    return true;
+  }
+  // tangent form: dP_alpha = s_e K_alpha dq_alpha from the committed state (HourglassControl)
+  const HourglassMatrix q = hex8_hourglass_displacements(reference, F, element_displacement);
+  const HourglassMatrix dq = q - committed_hourglass_q_[e];
+  const double scale = hourglass_scale_[e];
+  HourglassMatrix P = committed_hourglass_P_[e];
+  for (int alpha = 0; alpha < 4; ++alpha)
+    P.col(alpha) += scale * (hourglass_[e][alpha] * dq.col(alpha));
+  trial_hourglass_q_[e] = q;
+  trial_hourglass_P_[e] = P;
+  element_hourglass_[e] = 0.5 * (committed_hourglass_P_[e] + P).cwiseProduct(dq).sum();
+  add_hex8_hourglass_forces(reference, hourglass_[e], scale, F, q, P, force, tangent);
   return true;
 }
 
@@ -150,7 +178,10 @@ bool SolidModel<Law>::evaluate(const Eigen::VectorXd& displacement, Eigen::Vecto
   // nodal sums in element order
   const int dofs = dof_count();
   force.setZero(dofs);
-  trial_energy_ = {committed_energy_.internal, 0.0};
+  // the elastic form's hourglass energy is stored (a function of the state), the tangent
+  // form's is work (added to the committed)
+  trial_energy_ = {committed_energy_.internal,
+                   hourglass_control_.follow_tangent ? committed_energy_.hourglass : 0.0};
   std::vector<Eigen::Triplet<double>> triplets;
   if (with_tangent)
     triplets.reserve(static_cast<std::size_t>(576) * n);
@@ -177,6 +208,24 @@ bool SolidModel<Law>::evaluate(const Eigen::VectorXd& displacement, Eigen::Vecto
 }
 
 template <class Law> void SolidModel<Law>::commit() {
+  if (hourglass_control_.follow_tangent) {
+    // s_e = dS : dE / (dE : C_el : dE) over the step being committed (HourglassControl); a
+    // step that hardly strains the element (below 1e-12) keeps the scale it had
+    for (std::size_t e = 0; e < hourglass_scale_.size(); ++e) {
+      const material::Vector6 dE = trial_strain_[e] - committed_strain_[e];
+      if (!(dE.squaredNorm() > 1e-24))
+        continue;
+      const material::Vector6 dS = trial_stress_[e] - committed_stress_[e];
+      const double lambda = dilatational_modulus_[e] - 2.0 * shear_modulus_[e];
+      const double trace = dE[0] + dE[1] + dE[2];
+      const double elastic =
+          lambda * trace * trace + 2.0 * shear_modulus_[e] * dE.head<3>().squaredNorm() +
+          shear_modulus_[e] * dE.tail<3>().squaredNorm(); // engineering shears: mu gamma^2
+      hourglass_scale_[e] = std::clamp(dS.dot(dE) / elastic, hourglass_control_.min_scale, 1.0);
+    }
+    committed_hourglass_q_ = trial_hourglass_q_;
+    committed_hourglass_P_ = trial_hourglass_P_;
+  }
   committed_states_ = trial_states_;
   committed_stress_ = trial_stress_;
   committed_strain_ = trial_strain_;

@@ -54,7 +54,9 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
                                                          {"steel_density", 7.8e-9},
                                                          {"mortar_density", 2.4e-9},
                                                          {"mass_scaling", 4.0},
-                                                         {"threads", 2}})
+                                                         {"threads", 2},
+                                                         {"hourglass", "tangent"},
+                                                         {"hourglass_min_scale", 0.1}})
                                                 .dump(),
                                             "brace.json");
   ASSERT_TRUE(spec.solid.has_value());
@@ -68,6 +70,8 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
   EXPECT_EQ(spec.solid->mortar_density, 2.4e-9);
   EXPECT_EQ(spec.solid->mass_scaling, 4.0);
   EXPECT_EQ(spec.solid->threads, 2);
+  EXPECT_EQ(spec.solid->hourglass, model::SolidHourglass::tangent);
+  EXPECT_EQ(spec.solid->hourglass_min_scale, 0.1);
   // defaults: the source's densities
   const model::BraceSpec defaults = parse_brace(cased_brace(json::object()).dump(), "brace.json");
   ASSERT_TRUE(defaults.solid.has_value());
@@ -75,6 +79,8 @@ TEST(BraceSolidInput, ReadsTheSolidBlock) {
   EXPECT_EQ(defaults.solid->mortar_density, 2.35e-9);
   EXPECT_EQ(defaults.solid->tube, model::SolidTube::elements);
   EXPECT_EQ(defaults.solid->end_faces, model::SolidEndFaces::centre_lines);
+  EXPECT_EQ(defaults.solid->hourglass, model::SolidHourglass::elastic);
+  EXPECT_EQ(defaults.solid->hourglass_min_scale, 0.05);
   EXPECT_FALSE(parse_brace(cased_brace(json::object()).dump(), "b").solid->half_length);
   EXPECT_EQ(parse_brace(cased_brace({{"end_faces", "pinned"}}).dump(), "b").solid->end_faces,
             model::SolidEndFaces::pinned);
@@ -101,6 +107,13 @@ TEST(BraceSolidInput, ReportsEachBadMeshInput) {
   EXPECT_NE(message.find("pinned"), std::string::npos) << message;
   EXPECT_EQ(error_location(cased_brace({{"mass_scaling", 0.5}})), "/solid/mass_scaling");
   EXPECT_EQ(error_location(cased_brace({{"elements", 3}})), "/solid/elements");
+  EXPECT_EQ(error_location(cased_brace({{"hourglass", "plastic"}}), &message), "/solid/hourglass");
+  EXPECT_NE(message.find("tangent"), std::string::npos) << message;
+  EXPECT_EQ(error_location(cased_brace({{"hourglass_min_scale", 0.0}}), &message),
+            "/solid/hourglass_min_scale");
+  EXPECT_NE(message.find("(0, 1]"), std::string::npos) << message;
+  EXPECT_EQ(error_location(cased_brace({{"hourglass_min_scale", 1.5}})),
+            "/solid/hourglass_min_scale");
 
   json negative_gap = cased_brace(json::object());
   negative_gap["casing"]["gap"] = -0.5;

@@ -7,6 +7,7 @@
 #include "brb/solid/solid_model.hpp"
 
 #include "support/finite_difference.hpp"
+#include "support/hex_element.hpp"
 #include "support/steel_fixtures.hpp"
 
 #include <Eigen/Geometry>
@@ -17,28 +18,8 @@
 namespace brb::solid {
 namespace {
 
-/// A distorted element: the unit-cube corners scaled to 20 x 10 x 15 mm and moved randomly
-/// by up to 15 % of the smallest side.
-NodeMatrix distorted_element(std::uint32_t seed) {
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> uniform(-1.5, 1.5);
-  NodeMatrix x;
-  for (int a = 0; a < 8; ++a) {
-    x.col(a) = Eigen::Vector3d(10.0 * (kNaturalCoordinates[a][0] + 1),
-                               5.0 * (kNaturalCoordinates[a][1] + 1),
-                               7.5 * (kNaturalCoordinates[a][2] + 1));
-    for (int i = 0; i < 3; ++i)
-      x(i, a) += uniform(generator);
-  }
-  return x;
-}
-
-HexMesh one_element_mesh(const NodeMatrix& x) {
-  HexMesh mesh;
-  mesh.nodes = x;
-  mesh.elements.push_back({0, 1, 2, 3, 4, 5, 6, 7});
-  return mesh;
-}
+using test::distorted_element;
+using test::one_element_mesh;
 
 TEST(Hex8, MeanGradientsReproduceLinearFieldsExactly) {
   const NodeMatrix X = distorted_element(3);
@@ -94,31 +75,8 @@ TEST(Hex8, PureBendingEnergyOfABoxIsExact) {
   EXPECT_NEAR((force.cwiseProduct(u)).sum() / (2.0 * exact), 1.0, 1e-12);
 }
 
-/// Forces of a one-element model at positions x (3 x 8, flattened).
-template <class Law>
-Eigen::VectorXd element_force(SolidModel<Law>& model, const NodeMatrix& X,
-                              const Eigen::VectorXd& x) {
-  Eigen::VectorXd u = x - Eigen::Map<const Eigen::VectorXd>(X.data(), 24);
-  Eigen::VectorXd force;
-  std::string reason;
-  EXPECT_TRUE(model.evaluate(u, force, nullptr, reason)) << reason;
-  return force;
-}
-
-template <class Law>
-void expect_consistent_tangent(SolidModel<Law>& model, const NodeMatrix& X, const NodeMatrix& x,
-                               double tolerance) {
-  const Eigen::VectorXd positions = Eigen::Map<const Eigen::VectorXd>(x.data(), 24);
-  Eigen::VectorXd force;
-  Eigen::SparseMatrix<double> tangent;
-  std::string reason;
-  ASSERT_TRUE(model.evaluate(positions - Eigen::Map<const Eigen::VectorXd>(X.data(), 24), force,
-                             &tangent, reason));
-  const Eigen::MatrixXd analytic(tangent);
-  const Eigen::MatrixXd numeric = test::central_difference_jacobian(
-      [&](const Eigen::VectorXd& p) { return element_force(model, X, p); }, positions, 1e-6);
-  EXPECT_LT(test::relative_difference(analytic, numeric), tolerance);
-}
+using test::element_force;
+using test::expect_consistent_tangent;
 
 TEST(Hex8, ElasticTangentMatchesCentralDifferencesUnderLargeDeformation) {
   // reference: central differences of the internal force (independent of the tangent code)

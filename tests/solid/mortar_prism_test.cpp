@@ -6,6 +6,8 @@
 #include "brb/material/mortar_damage.hpp"
 #include "brb/solid/solid_explicit.hpp"
 
+#include "support/mortar_fixtures.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,12 +24,7 @@ TEST(SolidMortarPrism, TensionSofteningDissipatesTheFractureEnergyOfOneBand) {
   // 0.8 mm by a 1 - cos ramp over 0.05 s (about 70 first-mode periods).
   // Reference: the band dissipates Gf x its area (Oliver et al. 1990 regularisation, which
   // holds when lc = V^(1/3) equals the band width: cubes); acceptance of issue 6: within 5 %.
-  material::MortarParameters mortar;
-  mortar.youngs_modulus = 17520.0;
-  mortar.poissons_ratio = 0.2;
-  mortar.compressive_strength = 10.0;
-  mortar.tensile_strength = 1.0;
-  mortar.fracture_energy = 0.1;
+  const material::MortarParameters mortar = test::prism_mortar();
   const double side = 100.0, length = 500.0, shrink = 0.99, duration = 0.05;
   const StructuredPrismMesh prism(Eigen::Vector3d(length, side, side), {10, 2, 2});
   HexMesh mesh = prism.mesh();

@@ -165,6 +165,19 @@ inline constexpr std::array<std::pair<std::string_view, SolidEndFaces>, 3> kSoli
 /// The schema's name of an end-face support ("centre_lines", "clamped" or "pinned").
 std::string_view end_faces_name(SolidEndFaces faces);
 
+/// How the 3D model's hourglass stiffness follows the law (solid::HourglassControl):
+/// elastic: the elastic moduli throughout (stored hourglass energy); tangent: scaled by each
+/// element's ratio of its law's response to the elastic one over its last step, so a
+/// yielding element's in-element bending follows about E_t instead of E.
+enum class SolidHourglass { elastic, tangent };
+
+/// The brace schema's names of SolidHourglass (the solid block's `hourglass`).
+inline constexpr std::array<std::pair<std::string_view, SolidHourglass>, 2> kSolidHourglassNames{
+    {{"elastic", SolidHourglass::elastic}, {"tangent", SolidHourglass::tangent}}};
+
+/// The schema's name of a hourglass control ("elastic" or "tangent").
+std::string_view hourglass_name(SolidHourglass hourglass);
+
 /// The `solid` block of a brace file: the 3D continuum mesh of the brace (issue 6;
 /// solid/brace_mesh.hpp states the geometry). Defaults as listed.
 struct SolidMeshSpec {
@@ -179,6 +192,8 @@ struct SolidMeshSpec {
   double mortar_density = 2.35e-9; ///< tonne/mm^3 (the source's 2350 kg/m^3)
   double mass_scaling = 1.0;       ///< factor on both densities (>= 1: a longer stable step)
   int threads = 1;                 ///< threads of the element loops
+  SolidHourglass hourglass = SolidHourglass::elastic;
+  double hourglass_min_scale = 0.05; ///< floor of the tangent form's scale, in (0, 1]
 };
 
 struct BraceSpec {

@@ -86,10 +86,31 @@ void add_hex8_centre_response(const Hex8Reference& reference, const Eigen::Matri
                               const material::Matrix6& material_tangent, NodeMatrix& force,
                               ElementMatrix* tangent);
 
-/// Adds the hourglass forces (and their exact tangent when `tangent` is not null) and
-/// returns the hourglass energy U_hg of the element. g_alpha is formed from the nodal
-/// displacements (sum_a gamma_alpha,a X_a = 0 exactly), so that its round-off does not grow
-/// with the distance of the element from the origin.
+/// Hourglass displacements and the generalised hourglass stresses conjugate to them, one
+/// column per mode alpha, in reference axes.
+using HourglassMatrix = Eigen::Matrix<double, 3, 4>;
+
+/// The objective hourglass displacements q_alpha = F^-1 g_alpha, g_alpha = sum_a
+/// gamma_alpha,a u_a. g_alpha is formed from the nodal displacements (sum_a gamma_alpha,a X_a
+/// = 0 exactly), so that its round-off does not grow with the element's distance from the
+/// origin.
+HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
+                                             const Eigen::Matrix3d& F,
+                                             const NodeMatrix& displacement);
+
+/// Adds the nodal forces of the hourglass stresses P (column alpha conjugate to q_alpha, so
+/// the power is sum_alpha P_alpha . dq_alpha/dt): f_b = sum_alpha c_alpha,b F^-T P_alpha with
+/// c_alpha,b = gamma_alpha,b - b_b . q_alpha. When `tangent` is not null, adds d f / d x for
+/// stresses whose derivative is dP_alpha / dq_alpha = stiffness_scale K_alpha (1: the elastic
+/// stiffness form, where P = K q; s < 1: the tangent-scaled incremental form of SolidModel).
+void add_hex8_hourglass_forces(const Hex8Reference& reference, const HourglassStiffness& stiffness,
+                               double stiffness_scale, const Eigen::Matrix3d& F,
+                               const HourglassMatrix& q, const HourglassMatrix& P,
+                               NodeMatrix& force, ElementMatrix* tangent);
+
+/// The elastic stiffness form: P_alpha = K_alpha q_alpha. Adds the hourglass forces (and
+/// their exact tangent when `tangent` is not null) and returns the stored hourglass energy
+/// U_hg = 1/2 sum_alpha q_alpha . K_alpha q_alpha of the element.
 double add_hex8_hourglass_response(const Hex8Reference& reference,
                                    const HourglassStiffness& stiffness, const Eigen::Matrix3d& F,
                                    const NodeMatrix& displacement, NodeMatrix& force,

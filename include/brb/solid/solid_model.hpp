@@ -31,11 +31,36 @@ namespace brb::solid {
 /// Energies of a state (N mm).
 struct SolidEnergy {
   double internal = 0.0; ///< work of the centre-point stresses, int S : dE dV (stored + dissipated)
-  double hourglass = 0.0; ///< stored hourglass energy (conservative stiffness form)
+  /// Hourglass energy: the stored energy of the elastic stiffness form; in the tangent form
+  /// (HourglassControl), the work of the hourglass forces (stored and dissipated).
+  double hourglass = 0.0;
   /// Energy stored in the springs of non-element interactions (SolidBody; 0 for one model).
   double interaction = 0.0;
   /// Energy dissipated by friction in those interactions (SolidBody; 0 for one model).
   double friction = 0.0;
+};
+
+/// How the hourglass stiffness of hex8.hpp follows the law.
+/// - elastic (follow_tangent false): the stiffness form P_alpha = K_alpha q_alpha with the
+///   elastic moduli, also when the law yields. The linear part of the strain inside an
+///   element then stays elastic: at a plastic hinge only a few elements across, the
+///   in-element bending is overstiff and its elastic energy is spurious.
+/// - tangent: the incremental form dP_alpha = s_e K_alpha dq_alpha, where s_e is the element's
+///   ratio of the law's response to the elastic one over its last committed step,
+///   s_e = clamp(dS : dE / (dE : C_el : dE), min_scale, 1): 1 while the element is elastic
+///   or unloads, about E_t / E while it yields (0.09 for a bilinear steel with H = E / 10),
+///   min_scale where the law softens (cracked mortar), so the hourglass modes keep a floor
+///   of stiffness against spurious motion. This is the idea of scaling the hourglass
+///   stiffness with the material's current tangent modulus (Belytschko, Liu, Moran,
+///   Nonlinear Finite Elements, sec. 8.7: for nonlinear materials the stabilisation is based
+///   on the current tangent moduli; Belytschko & Bindeman 1993 scale their assumed-strain
+///   stiffness by the modulus likewise), made with the step's secant so that any law (a
+///   hardening steel, a softening mortar) gives its scalar without a law-specific modulus.
+///   The scale of the step is the last committed step's, so Newton's tangent is exact. The
+///   hourglass energy is then the work of the hourglass forces, int P : dq (trapezoidal).
+struct HourglassControl {
+  bool follow_tangent = false;
+  double min_scale = 0.05; ///< floor of s_e, in (0, 1]
 };
 
 template <class Law> class SolidModel {
@@ -44,8 +69,10 @@ public:
   /// law_for(lc): the law of an element whose characteristic length is lc = V^(1/3) (mm): the
   /// one-point element's integration weight is its volume V, so a softening law dissipates
   /// Gf per unit area over a band one element wide. density: tonne / mm^3, > 0.
-  /// Throws std::invalid_argument for an inverted element or a bad density.
-  SolidModel(HexMesh mesh, const std::function<Law(double)>& law_for, double density);
+  /// Throws std::invalid_argument for an inverted element, a bad density or a hourglass
+  /// floor outside (0, 1].
+  SolidModel(HexMesh mesh, const std::function<Law(double)>& law_for, double density,
+             HourglassControl hourglass = {});
 
   const HexMesh& mesh() const { return mesh_; }
   int node_count() const { return mesh_.node_count(); }
@@ -81,6 +108,11 @@ public:
   const SolidEnergy& energy() const { return committed_energy_; }
   const SolidEnergy& trial_energy() const { return trial_energy_; }
 
+  const HourglassControl& hourglass_control() const { return hourglass_control_; }
+  /// Each element's hourglass stiffness scale s_e for the next step (all 1 in the elastic
+  /// form; HourglassControl).
+  const std::vector<double>& hourglass_scales() const { return hourglass_scale_; }
+
   /// Lumped (row-sum) mass per DOF: rho V / 8 from each element to each of its nodes.
   Eigen::VectorXd lumped_mass() const;
   double density() const { return density_; }
@@ -101,8 +133,14 @@ private:
   double density_ = 0.0;
   std::vector<Law> laws_;
   std::vector<Hex8Reference> references_;
+  HourglassControl hourglass_control_;
   std::vector<HourglassStiffness> hourglass_;
   std::vector<double> dilatational_modulus_; // lambda + 2 mu of each element's law
+  std::vector<double> shear_modulus_;        // mu of each element's law
+  // the tangent hourglass form's state: hourglass displacements and stresses, and the scale
+  std::vector<HourglassMatrix> committed_hourglass_q_, trial_hourglass_q_;
+  std::vector<HourglassMatrix> committed_hourglass_P_, trial_hourglass_P_;
+  std::vector<double> hourglass_scale_;
   std::vector<State> committed_states_, trial_states_;
   std::vector<material::Vector6> committed_stress_, trial_stress_;
   std::vector<material::Vector6> committed_strain_, trial_strain_;
