@@ -179,8 +179,8 @@ HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
   return F.inverse() * g;
 }
 
-void add_hex8_hourglass_forces(const Hex8Reference& reference, const HourglassStiffness& stiffness,
-                               double stiffness_scale, const Eigen::Matrix3d& F,
+void add_hex8_hourglass_forces(const Hex8Reference& reference,
+                               const HourglassStiffness& stress_stiffness, const Eigen::Matrix3d& F,
                                const HourglassMatrix& q, const HourglassMatrix& P,
                                NodeMatrix& force, ElementMatrix* tangent) {
   const Eigen::Matrix3d F_inverse = F.inverse();
@@ -198,7 +198,7 @@ void add_hex8_hourglass_forces(const Hex8Reference& reference, const HourglassSt
   const NodeMatrix Fb = F_inverse_t * b; // F^-T b_b
   for (int alpha = 0; alpha < 4; ++alpha) {
     const Eigen::Vector3d pa = p.col(alpha);
-    const Eigen::Matrix3d KF = stiffness_scale * F_inverse_t * stiffness[alpha] * F_inverse;
+    const Eigen::Matrix3d KF = F_inverse_t * stress_stiffness[alpha] * F_inverse;
     for (int bb = 0; bb < 8; ++bb) {
       for (int cc = 0; cc < 8; ++cc) {
         const double cb = c(alpha, bb);
@@ -222,7 +222,7 @@ double add_hex8_hourglass_response(const Hex8Reference& reference,
     P.col(alpha) = stiffness[alpha] * q.col(alpha);
     energy += 0.5 * q.col(alpha).dot(P.col(alpha));
   }
-  add_hex8_hourglass_forces(reference, stiffness, 1.0, F, q, P, force, tangent);
+  add_hex8_hourglass_forces(reference, stiffness, F, q, P, force, tangent);
   return energy;
 }
 

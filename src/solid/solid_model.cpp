@@ -80,6 +80,13 @@ SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_
   }
   hourglass_scale_.assign(n, 1.0);
   if (hourglass_control_.follow_tangent) {
+    hourglass_moduli_.resize(n);
+    for (std::size_t e = 0; e < n; ++e) {
+      const Eigen::Matrix3d& axes = references_[e].axes;
+      for (int alpha = 0; alpha < 4; ++alpha)
+        hourglass_moduli_[e].col(alpha) =
+            (axes.transpose() * hourglass_[e][alpha] * axes).diagonal();
+    }
     committed_hourglass_q_.assign(n, HourglassMatrix::Zero());
     trial_hourglass_q_ = committed_hourglass_q_;
     committed_hourglass_P_ = committed_hourglass_q_;
@@ -130,17 +137,29 @@ bool SolidModel<Law>::evaluate_element(std::size_t e, const Eigen::Matrix3Xd& u,
                                                         element_displacement, force, tangent);
     return true;
   }
-  // tangent form: dP_alpha = s_e K_alpha dq_alpha from the committed state (HourglassControl)
+  // tangent form (HourglassControl): per component in the element's axes, dP = s_e k dq while
+  // loading (committed P dq > 0 or P = 0), k dq while unloading
+  const Eigen::Matrix3d& axes = reference.axes;
   const HourglassMatrix q = hex8_hourglass_displacements(reference, F, element_displacement);
-  const HourglassMatrix dq = q - committed_hourglass_q_[e];
-  const double scale = hourglass_scale_[e];
-  HourglassMatrix P = committed_hourglass_P_[e];
+  const HourglassMatrix dq_local = axes.transpose() * (q - committed_hourglass_q_[e]);
+  const HourglassMatrix& committed_P = committed_hourglass_P_[e];
+  const HourglassMatrix& moduli = hourglass_moduli_[e];
+  HourglassMatrix stiffness_local;
   for (int alpha = 0; alpha < 4; ++alpha)
-    P.col(alpha) += scale * (hourglass_[e][alpha] * dq.col(alpha));
+    for (int m = 0; m < 3; ++m) {
+      const bool unloading = committed_P(m, alpha) * dq_local(m, alpha) < 0.0;
+      stiffness_local(m, alpha) = (unloading ? 1.0 : hourglass_scale_[e]) * moduli(m, alpha);
+    }
+  const HourglassMatrix P_local = committed_P + stiffness_local.cwiseProduct(dq_local);
   trial_hourglass_q_[e] = q;
-  trial_hourglass_P_[e] = P;
-  element_hourglass_[e] = 0.5 * (committed_hourglass_P_[e] + P).cwiseProduct(dq).sum();
-  add_hex8_hourglass_forces(reference, hourglass_[e], scale, F, q, P, force, tangent);
+  trial_hourglass_P_[e] = P_local;
+  element_hourglass_[e] = 0.5 * (committed_P + P_local).cwiseProduct(dq_local).sum();
+  HourglassStiffness stress_stiffness; // dP / dq in reference axes, for Newton's tangent only
+  if (with_tangent)
+    for (int alpha = 0; alpha < 4; ++alpha)
+      stress_stiffness[alpha] = axes * stiffness_local.col(alpha).asDiagonal() * axes.transpose();
+  const HourglassMatrix P = axes * P_local;
+  add_hex8_hourglass_forces(reference, stress_stiffness, F, q, P, force, tangent);
   return true;
 }
 

@@ -17,6 +17,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace brb::solid {
 namespace {
@@ -120,6 +122,49 @@ TEST(HourglassControl, AYieldingElementsScaleIsItsShearTangentRatio) {
   // unloading is elastic: the scale is 1 again
   step(model, shear(gamma - increment));
   EXPECT_NEAR(model.hourglass_scales()[0], 1.0, 1e-9) << "unloading";
+}
+
+TEST(HourglassControl, TheHourglassWorkNeverFallsBelowZero) {
+  // Reference: each hourglass spring of the tangent form stores psi = P^2 / (2 k) and
+  // dissipates (1 - s) P dq >= 0 (solid_model.hpp), so its work W = psi + D >= 0 on any path.
+  // The path that would break a stiffness following s both ways: a steel cube's in-element
+  // bending loaded while its centre unloads elastically (scale 1), then released while the
+  // centre yields again (scale about 0.08); that spring would end with W = -(1 - s) k h^2 / 2.
+  // Then the reverse: loaded while yielding, released while elastic: W > 0 (dissipation).
+  const material::SteelParameters steel = test::linear_mixed_steel();
+  const double G = steel.youngs_modulus / (2.0 * (1.0 + steel.poissons_ratio));
+  const double yield_shear = steel.yield_stress / std::sqrt(3.0) / G;
+  const NodeMatrix X = cube();
+  SolidModel<material::SteelDamagePlasticity3D> model(
+      one_element_mesh(X), [&](double lc) { return material::SteelDamagePlasticity3D(steel, lc); },
+      7.85e-9, kTangent);
+  const double bending = 2e-3; // hourglass amplitude h: u_x += h y z / 10 mm
+  const auto state = [&](double gamma, double h) {
+    NodeMatrix u = NodeMatrix::Zero();
+    u.row(0) = 0.5 * gamma * X.row(1) + h * X.row(1).cwiseProduct(X.row(2)) / 10.0;
+    u.row(1) = 0.5 * gamma * X.row(0);
+    return u;
+  };
+  double gamma = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    gamma += 0.3 * yield_shear;
+    step(model, state(gamma, 0.0));
+  }
+  // (shear increment in yield shears, hourglass amplitude at the step's end)
+  const std::vector<std::pair<double, double>> cycle{
+      {-0.5, 0.0},    {-0.1, bending}, {0.6, bending}, {0.3, bending}, {0.3, 0.0}, // stiff, soft
+      {0.3, bending}, {-0.2, 0.0},     {0.2, 0.0}};                                // soft, stiff
+  double smallest_scale = 1.0;
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    for (const auto& [increment, amplitude] : cycle) {
+      gamma += increment * yield_shear;
+      step(model, state(gamma, amplitude));
+      smallest_scale = std::min(smallest_scale, model.hourglass_scales()[0]);
+      EXPECT_GE(model.energy().hourglass, -1e-12) << "repeat " << repeat;
+    }
+  }
+  EXPECT_LT(smallest_scale, 0.2) << "the centre yielded between the elastic steps";
+  EXPECT_GT(model.energy().hourglass, 0.0) << "the soft-loaded, stiff-released springs dissipate";
 }
 
 TEST(HourglassControl, ASofteningElementKeepsTheFloor) {

@@ -101,10 +101,11 @@ HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
 /// Adds the nodal forces of the hourglass stresses P (column alpha conjugate to q_alpha, so
 /// the power is sum_alpha P_alpha . dq_alpha/dt): f_b = sum_alpha c_alpha,b F^-T P_alpha with
 /// c_alpha,b = gamma_alpha,b - b_b . q_alpha. When `tangent` is not null, adds d f / d x for
-/// stresses whose derivative is dP_alpha / dq_alpha = stiffness_scale K_alpha (1: the elastic
-/// stiffness form, where P = K q; s < 1: the tangent-scaled incremental form of SolidModel).
-void add_hex8_hourglass_forces(const Hex8Reference& reference, const HourglassStiffness& stiffness,
-                               double stiffness_scale, const Eigen::Matrix3d& F,
+/// stresses whose derivative is dP_alpha / dq_alpha = stress_stiffness[alpha] (K_alpha in the
+/// elastic stiffness form, where P = K q; SolidModel's tangent form passes its loading or
+/// unloading stiffness).
+void add_hex8_hourglass_forces(const Hex8Reference& reference,
+                               const HourglassStiffness& stress_stiffness, const Eigen::Matrix3d& F,
                                const HourglassMatrix& q, const HourglassMatrix& P,
                                NodeMatrix& force, ElementMatrix* tangent);
 

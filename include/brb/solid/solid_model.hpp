@@ -45,19 +45,24 @@ struct SolidEnergy {
 ///   elastic moduli, also when the law yields. The linear part of the strain inside an
 ///   element then stays elastic: at a plastic hinge only a few elements across, the
 ///   in-element bending is overstiff and its elastic energy is spurious.
-/// - tangent: the incremental form dP_alpha = s_e K_alpha dq_alpha, where s_e is the element's
-///   ratio of the law's response to the elastic one over its last committed step,
-///   s_e = clamp(dS : dE / (dE : C_el : dE), min_scale, 1): 1 while the element is elastic
-///   or unloads, about E_t / E while it yields (0.09 for a bilinear steel with H = E / 10),
-///   min_scale where the law softens (cracked mortar), so the hourglass modes keep a floor
-///   of stiffness against spurious motion. This is the idea of scaling the hourglass
-///   stiffness with the material's current tangent modulus (Belytschko, Liu, Moran,
-///   Nonlinear Finite Elements, sec. 8.7: for nonlinear materials the stabilisation is based
-///   on the current tangent moduli; Belytschko & Bindeman 1993 scale their assumed-strain
-///   stiffness by the modulus likewise), made with the step's secant so that any law (a
-///   hardening steel, a softening mortar) gives its scalar without a law-specific modulus.
-///   The scale of the step is the last committed step's, so Newton's tangent is exact. The
-///   hourglass energy is then the work of the hourglass forces, int P : dq (trapezoidal).
+/// - tangent: incremental hourglass stresses, each component (mode alpha, element axis m, in
+///   which K_alpha is diagonal with moduli k) a spring that loads with s_e k and unloads with k:
+///     dP = s_e k dq while P dq > 0 (|P| grows), dP = k dq otherwise,
+///   where s_e is the element's ratio of its law's response to the elastic one over its last
+///   committed step, s_e = clamp(dS : dE / (dE : C_el : dE), min_scale, 1): 1 while the
+///   element is elastic or unloads, about E_t / E while it yields (H / (H + 3 G) in J2 shear),
+///   min_scale where the law softens (cracked mortar), a floor of stiffness against spurious
+///   modes. This is the idea of basing the hourglass stiffness on the material's current
+///   tangent moduli (Belytschko, Liu & Moran, Nonlinear Finite Elements, sec. 8.7), made with
+///   the step's secant so that any law (a hardening steel, a softening mortar) gives its
+///   scalar. Unloading with k is what keeps it thermodynamically sound: with the stored energy
+///   psi = P^2 / (2 k) of each spring, the dissipation is dW - dpsi = (1 - s) P dq >= 0 when
+///   loading and 0 when unloading, so the hourglass work W = psi + D never falls below zero.
+///   (A stiffness that followed s_e both ways would create energy: loaded at k, unloaded at
+///   s k, the spring keeps pushing long after it passed its start.) The scale is the last
+///   committed step's and the branch is chosen from the committed P, so Newton's tangent is
+///   exact within a branch. The hourglass energy is then the hourglass forces' work, int P dq
+///   (trapezoidal; exact for these piecewise linear springs).
 struct HourglassControl {
   bool follow_tangent = false;
   double min_scale = 0.05; ///< floor of s_e, in (0, 1]
@@ -137,7 +142,9 @@ private:
   std::vector<HourglassStiffness> hourglass_;
   std::vector<double> dilatational_modulus_; // lambda + 2 mu of each element's law
   std::vector<double> shear_modulus_;        // mu of each element's law
-  // the tangent hourglass form's state: hourglass displacements and stresses, and the scale
+  // the tangent hourglass form's state: hourglass displacements (reference axes) and
+  // stresses (element axes, where K_alpha is diagonal with the moduli k), and the scale
+  std::vector<HourglassMatrix> hourglass_moduli_; // k(m, alpha) in the element's axes
   std::vector<HourglassMatrix> committed_hourglass_q_, trial_hourglass_q_;
   std::vector<HourglassMatrix> committed_hourglass_P_, trial_hourglass_P_;
   std::vector<double> hourglass_scale_;
