@@ -208,7 +208,9 @@ SolidCyclicResult run_solid_cyclic(const model::BraceSpec& brace,
     // t -> 0 however slow the loading (see quasi_static_floor in the header).
     if (r.internal > result.quasi_static_floor) {
       result.max_kinetic_ratio = std::max(result.max_kinetic_ratio, r.kinetic / r.internal);
-      result.max_hourglass_ratio = std::max(result.max_hourglass_ratio, r.hourglass / r.internal);
+      // |.|: a negative hourglass work would be energy the control made, as bad as a large one
+      result.max_hourglass_ratio =
+          std::max(result.max_hourglass_ratio, std::abs(r.hourglass) / r.internal);
     }
     result.max_energy_error = std::max(result.max_energy_error, r.energy_error);
     if (r.point > 0) {

@@ -63,7 +63,7 @@ struct SolidCyclicResult {
   /// KE / IE grows without bound for any loading rate).
   double quasi_static_floor = 0.0;
   double max_kinetic_ratio = 0.0;   ///< largest KE / IE over the records with IE > the floor
-  double max_hourglass_ratio = 0.0; ///< largest hourglass / IE over the same records
+  double max_hourglass_ratio = 0.0; ///< largest |hourglass| / IE over the same records
   double max_energy_error = 0.0;    ///< largest relative energy-balance error of a record
   double contact_penalty = 0.0;     ///< N/mm^3 (0: no contact)
 };
