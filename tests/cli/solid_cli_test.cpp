@@ -140,6 +140,8 @@ TEST(SolidCli, BareBarFollowsTheUniaxialLawAndWritesTheCyclicFiles) {
   const json& solid = summary["solid"];
   EXPECT_GT(solid["elements"].get<int>(), 0);
   EXPECT_GT(solid["explicit_steps"].get<long>(), 0);
+  EXPECT_EQ(solid["hourglass"].get<std::string>(), "elastic"); // the default control
+  EXPECT_FALSE(solid.contains("hourglass_min_scale"));         // only with "tangent"
   // quasi-static: kinetic energy < 5 % of internal energy (issue 6), balance closed
   EXPECT_LT(solid["max_kinetic_over_internal"].get<double>(), 0.05);
   EXPECT_LT(solid["max_energy_balance_error"].get<double>(), 1e-3);
