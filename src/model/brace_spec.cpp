@@ -6,20 +6,27 @@
 
 namespace brb::model {
 
-std::string_view end_faces_name(SolidEndFaces faces) {
-  for (const auto& [name, value] : kSolidEndFacesNames) {
-    if (value == faces)
+namespace {
+
+/// The schema's name of `value` in a (name, value) table; "unknown" when it is not listed.
+template <class Value, std::size_t N>
+std::string_view schema_name(const std::array<std::pair<std::string_view, Value>, N>& names,
+                             Value value) {
+  for (const auto& [name, listed] : names) {
+    if (listed == value)
       return name;
   }
   return "unknown";
 }
 
+} // namespace
+
+std::string_view end_faces_name(SolidEndFaces faces) {
+  return schema_name(kSolidEndFacesNames, faces);
+}
+
 std::string_view hourglass_name(SolidHourglass hourglass) {
-  for (const auto& [name, value] : kSolidHourglassNames) {
-    if (value == hourglass)
-      return name;
-  }
-  return "unknown";
+  return schema_name(kSolidHourglassNames, hourglass);
 }
 
 section::FiberLayout SectionSpec::mesh() const {

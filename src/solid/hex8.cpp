@@ -173,17 +173,17 @@ void add_hex8_centre_response(const Hex8Reference& reference, const Eigen::Matri
 }
 
 HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
-                                             const Eigen::Matrix3d& F,
+                                             const Eigen::Matrix3d& F_inverse,
                                              const NodeMatrix& displacement) {
   const HourglassMatrix g = displacement * reference.hourglass.transpose();
-  return F.inverse() * g;
+  return F_inverse * g;
 }
 
 void add_hex8_hourglass_forces(const Hex8Reference& reference,
-                               const HourglassStiffness& stress_stiffness, const Eigen::Matrix3d& F,
-                               const HourglassMatrix& q, const HourglassMatrix& P,
-                               NodeMatrix& force, ElementMatrix* tangent) {
-  const Eigen::Matrix3d F_inverse = F.inverse();
+                               const HourglassStiffness& stress_stiffness,
+                               const Eigen::Matrix3d& F_inverse, const HourglassMatrix& q,
+                               const HourglassMatrix& P, NodeMatrix& force,
+                               ElementMatrix* tangent) {
   const Eigen::Matrix3d F_inverse_t = F_inverse.transpose();
   const NodeMatrix& b = reference.gradients;
   const HourglassMatrix p = F_inverse_t * P; // p_alpha = F^-T P_alpha
@@ -215,14 +215,15 @@ double add_hex8_hourglass_response(const Hex8Reference& reference,
                                    const HourglassStiffness& stiffness, const Eigen::Matrix3d& F,
                                    const NodeMatrix& displacement, NodeMatrix& force,
                                    ElementMatrix* tangent) {
-  const HourglassMatrix q = hex8_hourglass_displacements(reference, F, displacement);
+  const Eigen::Matrix3d F_inverse = F.inverse();
+  const HourglassMatrix q = hex8_hourglass_displacements(reference, F_inverse, displacement);
   HourglassMatrix P;
   double energy = 0.0;
   for (int alpha = 0; alpha < 4; ++alpha) {
     P.col(alpha) = stiffness[alpha] * q.col(alpha);
     energy += 0.5 * q.col(alpha).dot(P.col(alpha));
   }
-  add_hex8_hourglass_forces(reference, stiffness, F, q, P, force, tangent);
+  add_hex8_hourglass_forces(reference, stiffness, F_inverse, q, P, force, tangent);
   return energy;
 }
 

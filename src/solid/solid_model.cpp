@@ -140,7 +140,9 @@ bool SolidModel<Law>::evaluate_element(std::size_t e, const Eigen::Matrix3Xd& u,
   // tangent form (HourglassControl): per component in the element's axes, dP = s_e k dq while
   // loading (committed P dq > 0 or P = 0), k dq while unloading
   const Eigen::Matrix3d& axes = reference.axes;
-  const HourglassMatrix q = hex8_hourglass_displacements(reference, F, element_displacement);
+  const Eigen::Matrix3d F_inverse = F.inverse();
+  const HourglassMatrix q =
+      hex8_hourglass_displacements(reference, F_inverse, element_displacement);
   const HourglassMatrix dq_local = axes.transpose() * (q - committed_hourglass_q_[e]);
   const HourglassMatrix& committed_P = committed_hourglass_P_[e];
   const HourglassMatrix& moduli = hourglass_moduli_[e];
@@ -159,7 +161,7 @@ bool SolidModel<Law>::evaluate_element(std::size_t e, const Eigen::Matrix3Xd& u,
     for (int alpha = 0; alpha < 4; ++alpha)
       stress_stiffness[alpha] = axes * stiffness_local.col(alpha).asDiagonal() * axes.transpose();
   const HourglassMatrix P = axes * P_local;
-  add_hex8_hourglass_forces(reference, stress_stiffness, F, q, P, force, tangent);
+  add_hex8_hourglass_forces(reference, stress_stiffness, F_inverse, q, P, force, tangent);
   return true;
 }
 

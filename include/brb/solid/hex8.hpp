@@ -91,23 +91,24 @@ void add_hex8_centre_response(const Hex8Reference& reference, const Eigen::Matri
 using HourglassMatrix = Eigen::Matrix<double, 3, 4>;
 
 /// The objective hourglass displacements q_alpha = F^-1 g_alpha, g_alpha = sum_a
-/// gamma_alpha,a u_a. g_alpha is formed from the nodal displacements (sum_a gamma_alpha,a X_a
-/// = 0 exactly), so that its round-off does not grow with the element's distance from the
-/// origin.
+/// gamma_alpha,a u_a, from the centre's F^-1 (F_inverse; the caller's, as the forces need it
+/// too). g_alpha is formed from the nodal displacements (sum_a gamma_alpha,a X_a = 0 exactly),
+/// so that its round-off does not grow with the element's distance from the origin.
 HourglassMatrix hex8_hourglass_displacements(const Hex8Reference& reference,
-                                             const Eigen::Matrix3d& F,
+                                             const Eigen::Matrix3d& F_inverse,
                                              const NodeMatrix& displacement);
 
 /// Adds the nodal forces of the hourglass stresses P (column alpha conjugate to q_alpha, so
 /// the power is sum_alpha P_alpha . dq_alpha/dt): f_b = sum_alpha c_alpha,b F^-T P_alpha with
-/// c_alpha,b = gamma_alpha,b - b_b . q_alpha. When `tangent` is not null, adds d f / d x for
+/// c_alpha,b = gamma_alpha,b - b_b . q_alpha, at the centre's F^-1 (F_inverse). When
+/// `tangent` is not null, adds d f / d x for
 /// stresses whose derivative is dP_alpha / dq_alpha = stress_stiffness[alpha] (K_alpha in the
 /// elastic stiffness form, where P = K q; SolidModel's tangent form passes its loading or
 /// unloading stiffness).
 void add_hex8_hourglass_forces(const Hex8Reference& reference,
-                               const HourglassStiffness& stress_stiffness, const Eigen::Matrix3d& F,
-                               const HourglassMatrix& q, const HourglassMatrix& P,
-                               NodeMatrix& force, ElementMatrix* tangent);
+                               const HourglassStiffness& stress_stiffness,
+                               const Eigen::Matrix3d& F_inverse, const HourglassMatrix& q,
+                               const HourglassMatrix& P, NodeMatrix& force, ElementMatrix* tangent);
 
 /// The elastic stiffness form: P_alpha = K_alpha q_alpha. Adds the hourglass forces (and
 /// their exact tangent when `tangent` is not null) and returns the stored hourglass energy
