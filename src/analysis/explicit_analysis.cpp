@@ -494,6 +494,9 @@ ExplicitStepReport ExplicitAnalysis::advance(double dt) {
     element->commit();
   std::swap(committed_nodes_, trial_nodes_);
   committed_full_force_ = assembler_.full_force();
+  // a coupling may change committed states at this fixed configuration (Model::
+  // add_commit_coupling): it does no work, and the next step's evaluation sees the new state
+  model_.apply_commit_couplings();
   displacement_ = std::move(q);
   velocity_ = std::move(v);
   acceleration_ = std::move(a);

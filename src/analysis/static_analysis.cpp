@@ -630,8 +630,24 @@ void StaticAnalysis::commit(double control, const StepEnergy& step) {
   released_at_commit_ = energy_.released_by_laws;
   energy_error_sum_ +=
       step.work - (energy_.stored + energy_.dissipated + energy_.released_by_laws - energy_before);
+  if (model_.apply_commit_couplings())
+    refresh_committed_forces();
   if (recording_path_)
     path_.push_back({control, false, committed_stable_, committed_});
+}
+
+void StaticAnalysis::refresh_committed_forces() {
+  // A coupling changed committed states without moving a node (Model::add_commit_coupling):
+  // the internal forces drop (or rise) at a fixed configuration, which does no work, so only
+  // the forces from which the next step's trapezoidal work starts change. The laws' energies
+  // are continuous across such a change (FiberSection::split_halves).
+  revert();
+  std::string failure;
+  if (!assemble(false, failure))
+    return; // keep the former forces; the next step evaluates the new state anyway
+  committed_internal_force_ = internal_force_;
+  control_force_ = kinematic_control() ? internal_force_.dot(control_rate_)
+                                       : reference_load_.dot(internal_force_);
 }
 
 void StaticAnalysis::revert() {

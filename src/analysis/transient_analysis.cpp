@@ -484,6 +484,17 @@ void TransientAnalysis::commit(const Increment& increment, const Eigen::VectorXd
   committed_nodes_ = trial_nodes_;
   committed_full_force_ = assembler_.full_force();
   committed_reduced_force_ = assembler_.reduced_force();
+  if (model_.apply_commit_couplings()) {
+    // a coupling changed committed states at a fixed configuration (Model::
+    // add_commit_coupling): no work is done; the committed forces are those of the new state
+    std::string failure;
+    for (const auto& element : model_.elements())
+      element->revert_to_committed();
+    if (assembler_.assemble(committed_nodes_, false, failure)) {
+      committed_full_force_ = assembler_.full_force();
+      committed_reduced_force_ = assembler_.reduced_force();
+    }
+  }
 }
 
 TransientAnalysis::Increment TransientAnalysis::make_increment(bool dynamic, double from,

@@ -14,6 +14,37 @@
 namespace brb::model {
 namespace {
 
+/// A mortar-only casing whose walls split (CasingSplitting) comes apart into two halves that
+/// bend each about its own centroid (FiberSection::split_halves). After each commit, each
+/// casing beam takes as its split fractions (phi_y, phi_z) the mean of its two end links'
+/// wall damage per direction (the y faces' split frees the halves y > 0 and y < 0). The
+/// damage is monotone, so are the fractions. Elements by index: a twin model gets the rule too.
+void add_casing_split_coupling(Model& model, std::vector<std::size_t> beam_index,
+                               std::vector<std::size_t> contact_index) {
+  model.add_commit_coupling([beams = std::move(beam_index), links = std::move(contact_index)](
+                                std::span<const std::unique_ptr<element::Element>> elements) {
+    bool changed = false;
+    for (std::size_t n = 0; n < beams.size(); ++n) {
+      // the indices were taken as these elements were added (build_brace_model)
+      const auto& start = static_cast<const element::CasingContact&>(*elements[links[n]]);
+      const auto& end = static_cast<const element::CasingContact&>(*elements[links[n + 1]]);
+      auto& beam = static_cast<CasingBeam&>(*elements[beams[n]]);
+      const std::array<double, 2> present = beam.local_beam().sections().front().split_fractions();
+      std::array<double, 2> fractions{};
+      for (int direction = 0; direction < 2; ++direction) {
+        const double damage =
+            0.5 * (start.split_damage()[direction] + end.split_damage()[direction]);
+        fractions[direction] = std::clamp(damage, present[direction], 1.0);
+      }
+      if (fractions != present) {
+        beam.split_sections(fractions);
+        changed = true;
+      }
+    }
+    return changed;
+  });
+}
+
 struct Zone {
   double length;
   const SectionSpec* section;
@@ -154,6 +185,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
   const double tube_shear = tube_steel.youngs_modulus / (2.0 * (1.0 + tube_steel.poissons_ratio));
   const double mortar_shear =
       casing.mortar.youngs_modulus / (2.0 * (1.0 + casing.mortar.poissons_ratio));
+  std::vector<std::size_t> casing_beam_index; // for the split coupling below
   for (std::size_t n = 0; n + 1 < stations; ++n) {
     const int first = result.nodes[n], second = result.nodes[n + 1];
     const double length = station_x[n + 1] - station_x[n];
@@ -169,6 +201,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
           section::FiberSection<material::MortarUniaxial>(
               fill_layout, material::MortarUniaxial(casing.mortar, weight * length), mortar_shear));
     }
+    casing_beam_index.push_back(model.elements().size());
     result.beams.push_back(&model.add_element(std::make_unique<CasingBeam>(
         std::array<int, 2>{first, second}, model.coordinates(first), model.coordinates(second),
         axes.col(2), integration, std::move(sections))));
@@ -183,6 +216,7 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
       CasingSpec::kDefaultLayerRatio * casing.mortar.youngs_modulus *
       std::min(core_extent_y / core_thickness_y, core_extent_z / core_thickness_z));
   check(layer_per_length >= 0.0, "casing/layer_stiffness", "must be >= 0 N/mm per mm");
+  std::vector<std::size_t> contact_index;
   for (std::size_t n = 0; n < stations; ++n) {
     const auto [extent_y, extent_z] = core_extent(*station_sections[n]);
     const auto [thickness_y, thickness_z] = casing.mortar_thickness(*station_sections[n]);
@@ -239,12 +273,15 @@ CasingModel add_casing(Model& model, BraceHandles& brace, const BraceSpec& spec,
     if (casing.high_mode_waves && expansion)
       wave_links = high_mode_waves(*station_sections[n], spec.steel, casing, tributary,
                                    2.0 * std::max(before, after));
+    contact_index.push_back(model.elements().size());
     result.contacts.push_back(&model.add_element(std::make_unique<element::CasingContact>(
         std::array<int, 2>{core, shell}, model.coordinates(core), model.coordinates(shell), link,
         skips.open_links, expansion, wave_links)));
     if (n == stations / 2)
       result.interior_link = link; // mid-length: a core station
   }
+  if (!casing.steel_tube && casing.splitting)
+    add_casing_split_coupling(model, casing_beam_index, contact_index);
 
   // stopper at the station nearest its position along the casing (default: mid-length)
   const double target =

@@ -180,5 +180,109 @@ TEST(FiberSection, IntegrationMisfitFallsWithTheSquareOfTheStep) {
   EXPECT_LT(coarse, 0.05);
 }
 
+// Split halves (FiberSection::split_halves). A rectangle of width b along y and depth h along
+// z, n equal cells along y: the cell-centre rule gives sum A y^2 = h b^3 / 12 (1 - 1/n^2), and
+// each half (width b/2, n/2 cells) about its own centroid h (b/2)^3 / 12 (1 - 4/n^2).
+TEST(FiberSection, FullySplitSectionBendsAsItsTwoHalves) {
+  const auto steel = test::linear_mixed_steel();
+  const double b = 30.0, h = 10.0;
+  const int n = 6;
+  FiberSection section(mesh_rectangle(b, h, n, 4), SteelUniaxial(steel, 1.0), 8e4);
+  const double E = steel.youngs_modulus;
+  const double whole = h * b * b * b / 12.0 * (1.0 - 1.0 / (n * n));
+  const double halves = 2.0 * h * std::pow(b / 2.0, 3) / 12.0 * (1.0 - 4.0 / (n * n));
+  EXPECT_NEAR(section.evaluate(SectionVector::Zero()).tangent(2, 2), E * whole, 1e-6 * E * whole);
+  section.commit();
+  section.split_halves({1.0, 0.0});
+  const auto& split = section.evaluate(SectionVector(1e-5, 0.0, 0.0));
+  EXPECT_NEAR(split.tangent(2, 2), E * halves, 1e-9 * E * whole);
+  EXPECT_NEAR(split.tangent(2, 2), 0.25 * E * whole * (1.0 - 4.0 / (n * n)) / (1.0 - 1.0 / (n * n)),
+              1e-9 * E * whole);
+  // the other direction and the axial stiffness are untouched; the halves stay symmetric
+  EXPECT_NEAR(split.tangent(0, 0), E * b * h, 1e-9 * E * b * h);
+  EXPECT_NEAR(split.tangent(1, 1), E * section.layout().second_moment_y(), 1e-6);
+  EXPECT_NEAR(split.tangent(0, 2), 0.0, 1e-9 * E * b * h);
+  EXPECT_EQ(section.split_fractions()[0], 1.0);
+}
+
+TEST(FiberSection, PartlySplitStiffnessFollowsTheLeverAlgebra) {
+  // Reference: sum A (z - phi c)^2 = I - (2 phi - phi^2) sum A c^2, sum A c^2 = A (h/4)^2 for
+  // the halves of a rectangle of depth h (centroids at +-h/4), whatever the cells along z.
+  const auto steel = test::linear_mixed_steel();
+  const double b = 12.0, h = 40.0, phi = 0.5;
+  FiberSection section(mesh_rectangle(b, h, 3, 8), SteelUniaxial(steel, 1.0), 8e4);
+  section.evaluate(SectionVector::Zero());
+  section.commit();
+  section.split_halves({0.0, phi});
+  const double lever_squares = b * h * (h / 4.0) * (h / 4.0);
+  const double expected = steel.youngs_modulus * (section.layout().second_moment_y() -
+                                                  (2 * phi - phi * phi) * lever_squares);
+  EXPECT_NEAR(section.evaluate(SectionVector::Zero()).tangent(1, 1), expected, 1e-9 * expected);
+}
+
+TEST(FiberSection, SplittingKeepsTheFiberStressesAndEnergiesAndLeavesTheHalvesSelfEquilibrated) {
+  // Bent elastically to kappa_z, then split: every fiber keeps its strain and stress, M_z
+  // falls to the halves' own moments E I_halves kappa_z, and the energies do not jump.
+  // Unbent to zero deformation, the halves keep opposite axial forces E A_h c kappa (c = b/4)
+  // that make no resultant, storing E kappa^2 sum A c^2 / 2 (theory: the moment of the
+  // halves' forces about the centroid, which the crack no longer transfers).
+  const auto steel = test::linear_mixed_steel();
+  const double b = 20.0, h = 10.0, kappa = 2e-5; // outer fiber 2e-4 < yield strain 1.3e-3
+  FiberSection section(mesh_rectangle(b, h, 8, 2), SteelUniaxial(steel, 1.0), 8e4);
+  section.evaluate(SectionVector(0.0, 0.0, kappa));
+  section.commit();
+  const std::vector<double> stresses = section.fiber_stresses();
+  const double stored = section.stored_energy(), work = section.stress_work();
+  section.split_halves({1.0, 0.0});
+  for (std::size_t i = 0; i < stresses.size(); ++i)
+    EXPECT_NEAR(section.fiber_stresses()[i], stresses[i], 1e-12 * steel.yield_stress);
+  EXPECT_NEAR(section.stored_energy(), stored, 1e-12 * stored);
+  EXPECT_NEAR(section.stress_work(), work, 1e-12 * work);
+  const double E = steel.youngs_modulus;
+  const double halves = 2.0 * h * std::pow(b / 2.0, 3) / 12.0 * (1.0 - 4.0 / 64.0);
+  EXPECT_NEAR(section.last_response().force[2], E * halves * kappa, 1e-9 * E * halves * kappa);
+
+  const auto& unbent = section.evaluate(SectionVector::Zero());
+  const double force_scale = E * b * h * kappa * b;
+  EXPECT_NEAR(unbent.force.norm(), 0.0, 1e-12 * force_scale);
+  const double locked = 0.5 * E * kappa * kappa * b * h * (b / 4.0) * (b / 4.0);
+  EXPECT_NEAR(section.stored_energy(), locked, 1e-9 * locked);
+  // elastic and linear: the trapezoidal stress work is exact, so it equals the stored energy
+  EXPECT_NEAR(section.stress_work(), section.stored_energy(), 1e-9 * stored);
+  EXPECT_NEAR(misfit_of(section), 0.0, 1e-9 * stored);
+}
+
+TEST(FiberSection, SplitTangentMatchesFiniteDifferencesPastYield) {
+  // Reference: central differences of the resultants of the split section (plastic fibers).
+  const auto steel = test::linear_mixed_steel();
+  FiberSection section(mesh_rectangle(20.0, 10.0, 6, 4), SteelUniaxial(steel, 1.0), 8e4);
+  section.evaluate(SectionVector(1e-4, 3e-4, -2e-4));
+  section.commit();
+  section.split_halves({0.6, 0.8});
+  const SectionVector deformation(-2e-4, 5e-4, -4e-4);
+  const SectionMatrix tangent = section.evaluate(deformation).tangent;
+  const std::array<double, 3> steps{1e-9, 1e-10, 1e-10};
+  for (int j = 0; j < 3; ++j) {
+    SectionVector ahead = deformation, behind = deformation;
+    ahead[j] += steps[j];
+    behind[j] -= steps[j];
+    const SectionVector force_ahead = section.evaluate(ahead).force;   // evaluate returns a
+    const SectionVector force_behind = section.evaluate(behind).force; // reference: copy it
+    const SectionVector difference = (force_ahead - force_behind) / (2.0 * steps[j]);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(tangent(i, j), difference[i], 1e-5 * tangent.norm()) << i << ", " << j;
+  }
+}
+
+TEST(FiberSection, SplitFractionsMustGrowWithinZeroToOne) {
+  const auto steel = test::linear_mixed_steel();
+  FiberSection section(mesh_rectangle(20.0, 10.0, 2, 2), SteelUniaxial(steel, 1.0), 8e4);
+  section.split_halves({0.5, 0.0});
+  EXPECT_THROW(section.split_halves({0.4, 0.0}), std::invalid_argument); // a crack does not heal
+  EXPECT_THROW(section.split_halves({0.5, 1.5}), std::invalid_argument);
+  EXPECT_THROW(section.split_halves({0.5, -0.1}), std::invalid_argument);
+  EXPECT_NO_THROW(section.split_halves({1.0, 1.0}));
+}
+
 } // namespace
 } // namespace brb::section

@@ -158,5 +158,30 @@ TEST(CasingSplittingBrace, CaseOneWithTheSplitCasingBucklesAsAWholeAndTheRunGoes
   EXPECT_LT(result.energy_balance.relative_error(), 1e-6);
 }
 
+TEST(CasingSplittingBrace, TheCasingBeamsSplitAsTheirLinksWalls) {
+  // After every commit each casing beam takes the mean of its two end links' wall damage as its
+  // split fractions (brace_model.cpp, add_casing_split_coupling), and its sections bend as two
+  // halves to that extent (FiberSection::split_halves; the lever algebra is checked in
+  // tests/section/fiber_section_test.cpp). The run's balance holds across the splits.
+  model::BraceSpec spec = io::read_brace(kSpecimen + "/brace.json");
+  model::BraceModel brace = model::build_brace_model(spec);
+  const CyclicTestResult result = test::run_monotonic(brace, -15.0 * brace.yield_deformation, 150);
+  ASSERT_TRUE(result.completed) << result.stop_reason;
+  EXPECT_LT(result.energy_balance.relative_error(), 1e-6);
+  const auto& links = brace.casing->contacts;
+  double largest_fraction = 0.0;
+  for (std::size_t n = 0; n < brace.casing->beams.size(); ++n) {
+    const auto& sections = brace.casing->beams[n]->local_beam().sections();
+    for (int direction = 0; direction < 2; ++direction) {
+      const double expected =
+          0.5 * (links[n]->split_damage()[direction] + links[n + 1]->split_damage()[direction]);
+      for (const auto& section : sections)
+        EXPECT_DOUBLE_EQ(section.split_fractions()[direction], expected) << n << ", " << direction;
+      largest_fraction = std::max(largest_fraction, expected);
+    }
+  }
+  EXPECT_GT(largest_fraction, 0.9); // the walls crack through (the test above: damage > 0.9)
+}
+
 } // namespace
 } // namespace brb::analysis

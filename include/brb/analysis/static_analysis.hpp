@@ -426,6 +426,8 @@ private:
   /// warm-started substep; a step-size control would flip with the target).
   bool energy_change_supplied_by_work(const StepEnergy& step) const;
   void commit(double control, const StepEnergy& step);
+  /// The committed internal forces again, after a commit coupling changed committed states.
+  void refresh_committed_forces();
   /// Whether the tangent of the last assembly (a converged state) is positive definite.
   bool tangent_is_positive_definite() const;
   void revert();

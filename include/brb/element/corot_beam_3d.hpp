@@ -145,6 +145,18 @@ public:
     committed_axial_field_ = axial_field_;
     committed_switch_work_ = switch_work_;
   }
+  /// Splits every committed section along its mid-planes to the fractions (phi_y, phi_z)
+  /// (FiberSection::split_halves: the fibers keep their strains and stresses, so the committed
+  /// axial strains stay equilibrated; the moments drop). Between commits only.
+  void split_sections(const std::array<double, 2>& fractions) requires requires(Section& section) {
+    section.split_halves(fractions);
+  }
+  {
+    for (auto& section : sections_)
+      section.split_halves(fractions);
+    revert_to_committed();
+  }
+
   void revert_to_committed() {
     for (auto& section : sections_)
       section.revert_to_committed();
@@ -606,6 +618,12 @@ public:
 
   void commit() override { local_.commit(); }
   void revert_to_committed() override { local_.revert_to_committed(); }
+  /// LocalBeam::split_sections, between commits (a mortar casing's split: brace_model.cpp).
+  void split_sections(const std::array<double, 2>& fractions) requires
+      requires(LocalBeam<Section>& local) {
+    local.split_sections(fractions);
+  }
+  { local_.split_sections(fractions); }
   void copy_state_from(const Element& other) override { copy_element_value(*this, other); }
   void save_state(io::StateWriter& out) const override { out(*this); }
   void load_state(io::StateReader& in) override {

@@ -7,6 +7,7 @@
 #include "brb/element/element.hpp"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -85,6 +86,20 @@ public:
 
   std::span<const std::unique_ptr<element::Element>> elements() const { return elements_; }
 
+  /// A rule that a static analysis runs after each commit, which may change the committed
+  /// state of some elements from that of others (a mortar casing's beams split by the split of
+  /// its contact links' walls: brace_model.cpp). It refers to elements by their index, so
+  /// that a twin model built from the same data carries the same rule, and returns whether
+  /// it changed anything (the analysis then re-evaluates the committed forces).
+  using CommitCoupling = std::function<bool(std::span<const std::unique_ptr<element::Element>>)>;
+  void add_commit_coupling(CommitCoupling coupling) { couplings_.push_back(std::move(coupling)); }
+  /// Runs every commit coupling; whether any changed a committed state.
+  bool apply_commit_couplings() const {
+    bool changed = false;
+    for (const auto& coupling : couplings_)
+      changed = coupling(elements_) || changed;
+    return changed;
+  }
   /// Takes over the state of every element of `other`, a twin model built from the same data
   /// (same elements in the same order; see Element::copy_state_from).
   void copy_element_states_from(const Model& other);
@@ -100,6 +115,7 @@ private:
   std::vector<EqualDofConstraint> equal_dofs_;
   std::vector<RigidDiaphragmConstraint> diaphragms_;
   std::vector<std::unique_ptr<element::Element>> elements_;
+  std::vector<CommitCoupling> couplings_;
 };
 
 } // namespace brb::model

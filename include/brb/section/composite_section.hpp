@@ -8,6 +8,7 @@
 #include "brb/section/fiber_section.hpp"
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 namespace brb::section {
@@ -42,6 +43,17 @@ public:
     first_.revert_to_committed();
     second_.revert_to_committed();
   }
+  /// Splits both parts along their mid-planes (FiberSection::split_halves; each part's halves
+  /// about their own centroids, which for one material is its stiffness centroid). Between
+  /// commits only.
+  void split_halves(const std::array<double, 2>& fractions) {
+    first_.split_halves(fractions);
+    second_.split_halves(fractions);
+    response_.force = first_.last_response().force + second_.last_response().force;
+    response_.tangent = first_.last_response().tangent + second_.last_response().tangent;
+  }
+  /// Split fractions (phi_y, phi_z) of the committed state (the second part's: the fill).
+  const std::array<double, 2>& split_fractions() const { return second_.split_fractions(); }
 
   /// G J of the parts in parallel (N mm^2).
   double torsional_stiffness() const {

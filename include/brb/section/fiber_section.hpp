@@ -8,6 +8,17 @@
 //
 // The section owns the fibers' committed and trial states in contiguous arrays; the loop
 // over fibers calls the law directly (no virtual call per fiber).
+//
+// Split halves (split_halves()): a section cut through by a crack along its mid-plane y = 0
+// (or z = 0) bends as two halves that slip along the crack, each about its own centroid.
+// With split fractions phi_y, phi_z in [0, 1] and c_y, c_z the centroid of the fiber's half,
+// the fiber strain is e0 + (z - phi_z c_z) kappa_y - (y - phi_y c_y) kappa_z + o, and the
+// levers of the resultants are the same (work-conjugate), so at phi = 1 the bending stiffness
+// is the sum of the halves' own, sum E A (y - c_y)^2, not the whole section's. The offsets o
+// keep every fiber's strain (and so its stress) continuous when phi grows: the halves keep
+// their axial forces (held by the member's ends and the crack's friction), the moment those
+// forces made about the section's centroid leaves the resultants at once, and every energy
+// of the section (stored, dissipated, stress work) stays continuous: the split does no work.
 #pragma once
 
 #include "brb/io/state_archive.hpp"
@@ -16,7 +27,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <concepts>
+#include <stdexcept>
 #include <vector>
 
 namespace brb::section {
@@ -52,35 +65,56 @@ public:
   /// Trial response at a section deformation; fiber trial states are kept until
   /// commit() or revert_to_committed().
   const Response& evaluate(const SectionVector& deformation) {
-    Response response;
-    const double* y = layout_.y.data();
-    const double* z = layout_.z.data();
-    const double* area = layout_.area.data();
-    for (std::size_t i = 0; i < layout_.size(); ++i) {
-      const double strain = deformation[0] + z[i] * deformation[1] - y[i] * deformation[2];
-      const auto fiber = law_.evaluate(committed_[i], strain);
-      trial_[i] = fiber.state;
-      stress_[i] = fiber.stress;
-      strain_[i] = strain;
-      const double force = fiber.stress * area[i];
-      response.force += SectionVector(force, force * z[i], -force * y[i]);
-      const SectionVector lever(1.0, z[i], -y[i]);
-      response.tangent.noalias() += (fiber.tangent * area[i]) * lever * lever.transpose();
-    }
-    response_ = response;
-    return response_;
+    deformation_ = deformation;
+    return strain_offset_.empty() ? evaluate_fibers<false>(deformation)
+                                  : evaluate_fibers<true>(deformation);
   }
+
+  /// Splits the committed section along its mid-planes to the fractions (phi_y, phi_z), each
+  /// in [0, 1] and not below its present value (a crack does not heal): phi_y frees the halves
+  /// y > 0 and y < 0 (bending kappa_z), phi_z the halves z > 0 and z < 0 (kappa_y). The fiber
+  /// strains and stresses stay as committed; last_response() becomes the committed state's
+  /// response with the new levers. Call between commits only (the trial state is discarded).
+  void split_halves(const std::array<double, 2>& fractions) {
+    for (int axis = 0; axis < 2; ++axis) {
+      if (!(fractions[axis] >= split_fraction_[axis] && fractions[axis] <= 1.0))
+        throw std::invalid_argument("FiberSection::split_halves: a split fraction must lie in "
+                                    "[its present value, 1]");
+    }
+    if (fractions == split_fraction_)
+      return;
+    if (half_centroid_y_.empty())
+      locate_half_centroids();
+    if (strain_offset_.empty())
+      strain_offset_.assign(layout_.size(), 0.0);
+    const double kappa_y = committed_deformation_[1], kappa_z = committed_deformation_[2];
+    const double grow_y = fractions[0] - split_fraction_[0];
+    const double grow_z = fractions[1] - split_fraction_[1];
+    for (std::size_t i = 0; i < layout_.size(); ++i) {
+      // e = e0 + (z - phi_z c_z) kappa_y - (y - phi_y c_y) kappa_z + o stays the same
+      strain_offset_[i] +=
+          grow_z * half_centroid_z_[i] * kappa_y - grow_y * half_centroid_y_[i] * kappa_z;
+    }
+    split_fraction_ = fractions;
+    revert_to_committed();
+    evaluate(committed_deformation_);
+  }
+
+  /// Split fractions (phi_y, phi_z) of the committed state (split_halves()).
+  const std::array<double, 2>& split_fractions() const { return split_fraction_; }
 
   void commit() {
     committed_work_ = stress_work();
     committed_ = trial_;
     committed_stress_ = stress_;
     committed_strain_ = strain_;
+    committed_deformation_ = deformation_;
   }
   void revert_to_committed() {
     trial_ = committed_;
     stress_ = committed_stress_;
     strain_ = committed_strain_;
+    deformation_ = committed_deformation_;
   }
 
   /// Checkpoints (io/state_archive.hpp): the committed fibers and the last response; a
@@ -89,7 +123,9 @@ public:
   requires io::state_of<Self, FiberSection>
   friend void state_fields(Archive& archive, Self& section) {
     archive(section.committed_, section.committed_stress_, section.committed_strain_,
-            section.committed_work_, section.response_);
+            section.committed_work_, section.response_, section.committed_deformation_,
+            section.split_fraction_, section.strain_offset_, section.half_centroid_y_,
+            section.half_centroid_z_);
   }
 
   double torsional_stiffness() const { return shear_modulus_ * layout_.torsion_constant; }
@@ -159,6 +195,59 @@ public:
   }
 
 private:
+  template <bool with_split> const Response& evaluate_fibers(const SectionVector& deformation) {
+    Response response;
+    const double* y = layout_.y.data();
+    const double* z = layout_.z.data();
+    const double* area = layout_.area.data();
+    for (std::size_t i = 0; i < layout_.size(); ++i) {
+      double lever_z = z[i], lever_y = y[i], offset = 0.0;
+      if constexpr (with_split) {
+        lever_z -= split_fraction_[1] * half_centroid_z_[i];
+        lever_y -= split_fraction_[0] * half_centroid_y_[i];
+        offset = strain_offset_[i];
+      }
+      const double strain =
+          deformation[0] + lever_z * deformation[1] - lever_y * deformation[2] + offset;
+      const auto fiber = law_.evaluate(committed_[i], strain);
+      trial_[i] = fiber.state;
+      stress_[i] = fiber.stress;
+      strain_[i] = strain;
+      const double force = fiber.stress * area[i];
+      response.force += SectionVector(force, force * lever_z, -force * lever_y);
+      const SectionVector lever(1.0, lever_z, -lever_y);
+      response.tangent.noalias() += (fiber.tangent * area[i]) * lever * lever.transpose();
+    }
+    response_ = response;
+    return response_;
+  }
+
+  /// Area centroid of each fiber's half, y > 0 or y < 0 (0 on the plane), and z likewise.
+  void locate_half_centroids() {
+    const auto centroids = [this](const std::vector<double>& coordinate) {
+      double moment_above = 0.0, area_above = 0.0, moment_below = 0.0, area_below = 0.0;
+      for (std::size_t i = 0; i < layout_.size(); ++i) {
+        if (coordinate[i] > 0.0) {
+          moment_above += layout_.area[i] * coordinate[i];
+          area_above += layout_.area[i];
+        } else if (coordinate[i] < 0.0) {
+          moment_below += layout_.area[i] * coordinate[i];
+          area_below += layout_.area[i];
+        }
+      }
+      std::vector<double> half_centroid(layout_.size(), 0.0);
+      for (std::size_t i = 0; i < layout_.size(); ++i) {
+        if (coordinate[i] > 0.0)
+          half_centroid[i] = moment_above / area_above;
+        else if (coordinate[i] < 0.0)
+          half_centroid[i] = moment_below / area_below;
+      }
+      return half_centroid;
+    };
+    half_centroid_y_ = centroids(layout_.y);
+    half_centroid_z_ = centroids(layout_.z);
+  }
+
   FiberLayout layout_;
   UniaxialLaw law_;
   double shear_modulus_;
@@ -170,6 +259,12 @@ private:
   std::vector<double> committed_strain_;
   double committed_work_ = 0.0; ///< stress_work() of the committed state
   Response response_;
+  SectionVector deformation_ = SectionVector::Zero();           ///< of the last evaluate()
+  SectionVector committed_deformation_ = SectionVector::Zero(); ///< of the committed state
+  std::array<double, 2> split_fraction_{}; ///< phi_y, phi_z (committed; split_halves())
+  std::vector<double> strain_offset_;      ///< o per fiber (empty while never split)
+  std::vector<double> half_centroid_y_;    ///< c_y per fiber (empty while never split)
+  std::vector<double> half_centroid_z_;    ///< c_z per fiber
 };
 
 } // namespace brb::section
