@@ -262,6 +262,7 @@ void record_solver_statistics(const StaticAnalysis& analysis, CyclicTestResult& 
   result.energy_cuts = analysis.energy_cuts();
   result.far_branch_cuts = analysis.far_branch_cuts();
   result.energy_tolerance_missed = analysis.energy_tolerance_missed();
+  result.work = analysis.work();
 }
 
 CyclicTestResult run_cyclic_test(model::BraceModel& brace, std::span<const double> deformation,

@@ -160,7 +160,10 @@ void StaticAnalysis::archive_committed(Archive& archive, Self& self) {
           self.committed_stable_, self.energy_, self.energy_error_sum_, self.released_at_commit_,
           self.force_scale_, self.total_iterations_, self.total_substeps_, self.regularised_steps_,
           self.unstable_accepted_, self.energy_cuts_, self.energy_tolerance_missed_,
-          self.far_branch_cuts_, self.retraced_steps_);
+          self.far_branch_cuts_, self.retraced_steps_, self.work_.assemblies,
+          self.work_.line_search_assemblies, self.work_.converged_newton_iterations,
+          self.work_.failed_newton_iterations, self.work_.failed_newton_calls,
+          self.work_.pseudo_time_steps, self.work_.pseudo_time_iterations);
 }
 
 void StaticAnalysis::save_state(io::StateWriter& out) const {
@@ -261,6 +264,7 @@ void StaticAnalysis::build_tangent_slots() {
 }
 
 bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
+  ++work_.assemblies;
   internal_force_.setZero();
   force_scale_ = 0.0;
   const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
@@ -405,6 +409,22 @@ bool StaticAnalysis::residual_converged(const Eigen::VectorXd& residual, double 
 StaticAnalysis::Attempt StaticAnalysis::newton(double control,
                                                const Eigen::SparseMatrix<double>* viscosity,
                                                int max_iterations, bool assembled) {
+  const Attempt attempt = newton_iterations(control, viscosity, max_iterations, assembled);
+  if (viscosity != nullptr) {
+    ++work_.pseudo_time_steps;
+    work_.pseudo_time_iterations += attempt.iterations;
+  } else if (attempt.converged) {
+    work_.converged_newton_iterations += attempt.iterations;
+  } else {
+    ++work_.failed_newton_calls;
+    work_.failed_newton_iterations += attempt.iterations;
+  }
+  return attempt;
+}
+
+StaticAnalysis::Attempt
+StaticAnalysis::newton_iterations(double control, const Eigen::SparseMatrix<double>* viscosity,
+                                  int max_iterations, bool assembled) {
   Attempt attempt;
   Eigen::VectorXd residual;
   // With a viscosity C (free x free, symmetric positive definite) this is one backward-Euler step
@@ -422,6 +442,9 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
   double start_residual = 0.0;
   double smallest_residual = 0.0;
   for (int iteration = 0; iteration <= max_iterations; ++iteration) {
+    // (a failure counts the iterations it did: iteration corrections taken, plus the one
+    // that failed when it failed within an iteration)
+    attempt.iterations = iteration;
     if (!assembled && !assemble(true, attempt.failure))
       return attempt;
     assembled = false;
@@ -483,6 +506,7 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
       solver_.analyzePattern(*matrix);
       pattern_analysed_ = true;
     }
+    attempt.iterations = iteration + 1;
     solver_.factorize(*matrix);
     if (solver_.info() != Eigen::Success) {
       attempt.failure = "singular tangent stiffness";
@@ -511,6 +535,7 @@ StaticAnalysis::Attempt StaticAnalysis::newton(double control,
       trial_ = start;
       apply_free_increment(increment, step);
       moved_ = start_moved + step * increment;
+      ++work_.line_search_assemblies;
       return assemble(true, failure);
     };
     double full_slope = std::numeric_limits<double>::quiet_NaN();

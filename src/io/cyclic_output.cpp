@@ -50,7 +50,14 @@ Json cyclic_summary_json(const std::string& brace_name, double yield_deformation
                            {"unstable_accepted", result.unstable_accepted},
                            {"energy_cuts", result.energy_cuts},
                            {"far_branch_cuts", result.far_branch_cuts},
-                           {"energy_tolerance_missed", result.energy_tolerance_missed}};
+                           {"energy_tolerance_missed", result.energy_tolerance_missed},
+                           {"assemblies", result.work.assemblies},
+                           {"line_search_assemblies", result.work.line_search_assemblies},
+                           {"converged_newton_iterations", result.work.converged_newton_iterations},
+                           {"failed_newton_iterations", result.work.failed_newton_iterations},
+                           {"failed_newton_calls", result.work.failed_newton_calls},
+                           {"pseudo_time_steps", result.work.pseudo_time_steps},
+                           {"pseudo_time_iterations", result.work.pseudo_time_iterations}};
   if (result.resumed_from_step > 0) { // a run taken up from a checkpoint (README, "Checkpoints")
     summary["solver"]["resumed_from_step"] = result.resumed_from_step;
     summary["solver"]["seconds_before_resume"] = result.seconds_before_resume;

@@ -74,6 +74,10 @@ void expect_same_run(const CyclicTestResult& taken_up, const CyclicTestResult& r
   EXPECT_EQ(taken_up.regularised_steps, reference.regularised_steps);
   EXPECT_EQ(taken_up.energy_cuts, reference.energy_cuts);
   EXPECT_EQ(taken_up.far_branch_cuts, reference.far_branch_cuts);
+  EXPECT_EQ(taken_up.work.assemblies, reference.work.assemblies);
+  EXPECT_EQ(taken_up.work.line_search_assemblies, reference.work.line_search_assemblies);
+  EXPECT_EQ(taken_up.work.failed_newton_iterations, reference.work.failed_newton_iterations);
+  EXPECT_EQ(taken_up.work.pseudo_time_steps, reference.work.pseudo_time_steps);
   EXPECT_EQ(taken_up.indicators.max_mortar_damage, reference.indicators.max_mortar_damage);
   EXPECT_EQ(taken_up.indicators.max_buckling_half_waves,
             reference.indicators.max_buckling_half_waves);

@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <string>
 
 namespace brb::analysis {
@@ -46,6 +48,57 @@ TEST(SnapThrough, SoftSpringOverAShallowTrussSnapsAndReleasesEnergy) {
   EXPECT_GT(energy.released_in_jumps, 0.01 * energy.external_work);
   EXPECT_NEAR(energy.dissipated, 0.0, 1e-9 * energy.external_work);
   EXPECT_LT(energy.relative_error(), 1e-4); // trapezoidal work over smooth steps
+}
+
+/// A probe: an element without stiffness on one node that counts its evaluations, so the
+/// count is the number of times the model was assembled, seen from outside the solver.
+class EvaluationCounter final : public element::Element {
+public:
+  explicit EvaluationCounter(int node, int& evaluations)
+      : node_{node}, evaluations_(&evaluations) {}
+  std::span<const int> nodes() const override { return node_; }
+  bool evaluate(std::span<const element::NodeConfiguration>, Eigen::VectorXd& force,
+                Eigen::MatrixXd& tangent, std::string&) override {
+    ++*evaluations_;
+    force = Eigen::VectorXd::Zero(6);
+    tangent = Eigen::MatrixXd::Zero(6, 6);
+    return true;
+  }
+  void commit() override {}
+  void revert_to_committed() override {}
+  element::ElementEnergy energy() const override { return {}; }
+  void copy_state_from(const element::Element&) override {}
+
+private:
+  std::array<int, 1> node_;
+  int* evaluations_;
+};
+
+TEST(SnapThrough, SolverWorkAccountsForEveryIterationAndEveryAssembly) {
+  // StaticAnalysis::work(): each Newton iteration is booked once, as converged, failed or
+  // pseudo-time (their sum is total_iterations(), exactly); the assemblies are the element
+  // evaluations, counted independently here by a probe element. The limit point's plain
+  // Newton fails (stagnates) before the pseudo-time steps pass it, so both are non-zero.
+  const auto truss = truss_driven_along_y();
+  int evaluations = 0;
+  truss->model.add_element(std::make_unique<EvaluationCounter>(truss->apex, evaluations));
+  StaticAnalysis analysis(truss->model);
+  analysis.use_displacement_control(truss->driver, model::uy);
+  for (int step = 1; step <= 120; ++step)
+    ASSERT_TRUE(analysis.step_to(-5.0 * step).converged) << "step " << step;
+  const SolverWork& work = analysis.work();
+  EXPECT_GE(analysis.regularised_steps(), 1);
+  EXPECT_GE(work.failed_newton_calls, 1);
+  EXPECT_GE(work.failed_newton_iterations, work.failed_newton_calls);
+  EXPECT_GE(work.pseudo_time_steps, 1);
+  EXPECT_EQ(work.converged_newton_iterations + work.failed_newton_iterations +
+                work.pseudo_time_iterations,
+            analysis.total_iterations());
+  EXPECT_EQ(work.assemblies, evaluations);
+  // every correction is tried at one line-search point at least, and every Newton call and
+  // predictor assembles its start outside the line search
+  EXPECT_GE(work.line_search_assemblies, analysis.total_iterations());
+  EXPECT_GT(work.assemblies, work.line_search_assemblies);
 }
 
 /// What drive_truss_down measured.

@@ -289,15 +289,23 @@ TEST(CyclicCli, ShortProtocolWritesHysteresisAndSummary) {
 
   const json& solver = summary.at("solver");
   EXPECT_EQ(keys_of(solver),
-            (std::set<std::string>{"steps", "iterations", "substeps", "regularised_steps",
-                                   "unstable_accepted", "energy_cuts", "energy_tolerance_missed",
-                                   "far_branch_cuts"}));
+            (std::set<std::string>{
+                "steps", "iterations", "substeps", "regularised_steps", "unstable_accepted",
+                "energy_cuts", "energy_tolerance_missed", "far_branch_cuts", "assemblies",
+                "line_search_assemblies", "converged_newton_iterations", "failed_newton_iterations",
+                "failed_newton_calls", "pseudo_time_steps", "pseudo_time_iterations"}));
   EXPECT_EQ(solver.at("steps"), rows.size() - 1);
   EXPECT_GE(solver.at("substeps").get<int>(), solver.at("steps").get<int>());
   // (A straight uniform bar is in equilibrium after the predictor: no iteration is needed.)
   EXPECT_GE(solver.at("iterations").get<int>(), 0);
   EXPECT_GE(solver.at("regularised_steps").get<int>(), 0);
   EXPECT_GE(solver.at("unstable_accepted").get<int>(), 0);
+  // every iteration is booked once, by outcome; each step assembles at least once
+  EXPECT_EQ(solver.at("converged_newton_iterations").get<int>() +
+                solver.at("failed_newton_iterations").get<int>() +
+                solver.at("pseudo_time_iterations").get<int>(),
+            solver.at("iterations").get<int>());
+  EXPECT_GE(solver.at("assemblies").get<int>(), solver.at("steps").get<int>());
 
   const json& balance = summary.at("energy_balance");
   EXPECT_EQ(keys_of(balance),

@@ -125,6 +125,7 @@ struct CyclicTestResult {
   int energy_cuts = 0;             ///< substeps cut by the energy-error control
   int far_branch_cuts = 0;         ///< substeps cut by the far-branch control (NewtonSettings)
   int energy_tolerance_missed = 0; ///< substeps accepted at that control's floor
+  SolverWork work;                 ///< where the solver's effort went (assemblies, iterations)
   BraceIndicators indicators;
   std::vector<ElementHistoryPoint> history; ///< one per step, when asked for
   /// The deformed shape after each asked step and after the last converged one, when shapes
