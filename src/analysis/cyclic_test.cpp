@@ -131,7 +131,7 @@ namespace {
 // The checkpoint file: this tag, the format's version, the run key, the wall time so far and
 // the test's state. The version changes whenever a state's fields change.
 constexpr std::string_view kCheckpointTag = "brb cyclic checkpoint";
-constexpr std::uint32_t kCheckpointVersion = 1;
+constexpr std::uint32_t kCheckpointVersion = 2; // 2: split fiber sections, solver work
 } // namespace
 
 void write_checkpoint(const CyclicTest& test, const CyclicCheckpoint& checkpoint,
