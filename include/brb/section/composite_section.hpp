@@ -22,11 +22,9 @@ public:
 
   /// Trial response at a section deformation (e0, kappa_y, kappa_z) shared by both parts.
   const Response& evaluate(const SectionVector& deformation) {
-    const Response& first = first_.evaluate(deformation);
-    const Response& second = second_.evaluate(deformation);
-    response_.force = first.force + second.force;
-    response_.tangent = first.tangent + second.tangent;
-    return response_;
+    first_.evaluate(deformation);
+    second_.evaluate(deformation);
+    return sum_parts();
   }
 
   void commit() {
@@ -49,8 +47,7 @@ public:
   void split_halves(const std::array<double, 2>& fractions) {
     first_.split_halves(fractions);
     second_.split_halves(fractions);
-    response_.force = first_.last_response().force + second_.last_response().force;
-    response_.tangent = first_.last_response().tangent + second_.last_response().tangent;
+    sum_parts();
   }
   /// Split fractions (phi_y, phi_z) of the committed state (the second part's: the fill).
   const std::array<double, 2>& split_fractions() const { return second_.split_fractions(); }
@@ -75,6 +72,13 @@ public:
   const Response& last_response() const { return response_; }
 
 private:
+  /// The parts in parallel: the sum of their last responses, kept as this section's.
+  const Response& sum_parts() {
+    response_.force = first_.last_response().force + second_.last_response().force;
+    response_.tangent = first_.last_response().tangent + second_.last_response().tangent;
+    return response_;
+  }
+
   SectionA first_;
   SectionB second_;
   Response response_;
