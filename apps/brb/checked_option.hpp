@@ -1,4 +1,4 @@
-// One way to register a numeric CLI option whose value has a physical range (a step in mm,
+// Numeric CLI options with a checked range. A physical value (a step in mm,
 // a fraction of the gross work, an interval in seconds): the value must be finite and pass
 // `accept`, otherwise the parse fails with "<name>: <requirement>" and a non-zero exit.
 #pragma once
@@ -29,6 +29,16 @@ CLI::Option* add_checked_number_option(CLI::App& command, const std::string& nam
           },
           description)
       ->type_name(value_name);
+}
+
+/// Registers `--threads N` (a whole number 1 to 256, stored into `threads`): the threads that
+/// evaluate a brace's elements (NewtonSettings::element_threads), whose count does not change
+/// the results. `description` says what the command's runs gain from it.
+inline CLI::Option* add_element_threads_option(CLI::App& command, int& threads,
+                                               const std::string& description) {
+  return command.add_option("--threads", threads, description)
+      ->type_name("N")
+      ->check(CLI::Range(1, 256));
 }
 
 } // namespace brb::cli

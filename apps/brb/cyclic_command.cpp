@@ -248,6 +248,11 @@ CLI::App* add_cyclic_command(CLI::App& app, CyclicCommand& command) {
                    "results; removed once the outputs are written")
       ->type_name("FILE");
   add_checkpoint_interval_option(*cyclic, command.checkpoint_interval);
+  add_element_threads_option(*cyclic, command.threads,
+                             "Threads evaluating the brace's elements at each Newton iteration "
+                             "(default 1); the results are the same for any count. Worth 2 or "
+                             "more on a long run of a finely divided core (e.g. 32 or more core "
+                             "elements)");
   cyclic->footer(
       "Outputs (README, \"brb cyclic\"):\n"
       "  hysteresis.csv: step,cycle,deformation,force,max_lateral_displacement,substeps\n"
@@ -281,6 +286,7 @@ int run_cyclic_command(const CyclicCommand& command, std::ostream& report, std::
   analysis::NewtonSettings settings;
   settings.energy_tolerance = command.energy_tolerance;
   settings.balance_tolerance = command.balance_tolerance;
+  settings.element_threads = command.threads;
   analysis::StepObserver progress;
   if (command.progress_interval)
     progress = ProgressLine(notes, "brb: cyclic: ", protocol.deformation.size() - 1,

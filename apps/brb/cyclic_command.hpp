@@ -40,6 +40,9 @@ struct CyclicCommand {
   /// seconds of wall time, and removes it once the outputs are written.
   std::optional<std::filesystem::path> checkpoint;
   double checkpoint_interval = 600.0;
+  /// Threads evaluating the elements (NewtonSettings::element_threads; results do not
+  /// depend on it).
+  int threads = 1;
 };
 
 /// The brace's name in the outputs: its "name", or the brace file's name without extension.

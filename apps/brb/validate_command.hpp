@@ -17,7 +17,8 @@ struct ValidateCommand {
   std::vector<int> refinements;    ///< overrides every specimen's list when not empty
   std::optional<std::filesystem::path> report; ///< REPORT.md's place (default DIR/REPORT.md)
   std::filesystem::path shared_directory;      ///< resolves "shared:" paths
-  int jobs = 1; ///< runs at a time (each run is independent; results do not depend on it)
+  int jobs = 1;    ///< runs at a time (each run is independent; results do not depend on it)
+  int threads = 1; ///< element-loop threads of each run (results do not depend on it)
   /// Seconds between the progress lines of each run (none when empty; ProgressLine)
   std::optional<double> progress_interval;
   /// `--checkpoint-dir DIR`: each run keeps a checkpoint DIR/<id>_x<k>.checkpoint, takes up

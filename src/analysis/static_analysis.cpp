@@ -43,7 +43,7 @@ double EnergyBalance::relative_misfit() const {
 }
 
 StaticAnalysis::StaticAnalysis(model::Model& model, NewtonSettings settings)
-    : model_(model), settings_(settings) {
+    : model_(model), settings_(settings), evaluations_(settings.element_threads) {
   committed_.resize(model_.node_count());
   for (int node = 0; node < model_.node_count(); ++node) {
     committed_[node].position = model_.coordinates(node);
@@ -283,30 +283,25 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
       tangent_prescribed_prescribed_ = Eigen::MatrixXd::Zero(prescribed_count, prescribed_count);
     }
   }
-  for (const auto& element : model_.elements()) {
-    const auto nodes = element->nodes();
-    element_nodes_.resize(nodes.size());
-    for (std::size_t a = 0; a < nodes.size(); ++a)
-      element_nodes_[a] = trial_[nodes[a]];
-    if (!element->evaluate(element_nodes_, element_force_, element_tangent_, failure)) {
-      return false;
-    }
-    if (!element_force_.allFinite() || (with_tangent && !element_tangent_.allFinite())) {
-      failure = "an element returned a non-finite force or tangent";
-      return false;
-    }
-    force_scale_ = std::max(force_scale_, element_force_.lpNorm<Eigen::Infinity>());
+  if (!evaluations_.evaluate(model_, trial_, with_tangent, failure))
+    return false;
+  const auto elements = model_.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto nodes = elements[e]->nodes();
+    const Eigen::VectorXd& element_force = evaluations_.force(e);
+    const Eigen::MatrixXd& element_tangent = evaluations_.tangent(e);
+    force_scale_ = std::max(force_scale_, element_force.lpNorm<Eigen::Infinity>());
     const int element_dofs = static_cast<int>(nodes.size()) * kDofPerNode;
     for (int a = 0; a < element_dofs; ++a) {
       const int row = kDofPerNode * nodes[a / kDofPerNode] + a % kDofPerNode;
-      internal_force_[row] += element_force_[a];
+      internal_force_[row] += element_force[a];
       const int free_row = equation_[row];
       const int prescribed_row = prescribed_index_[row];
       if (!with_tangent || (free_row < 0 && prescribed_row < 0))
         continue;
       for (int b = 0; b < element_dofs; ++b) {
         const int column = kDofPerNode * nodes[b / kDofPerNode] + b % kDofPerNode;
-        const double value = element_tangent_(a, b);
+        const double value = element_tangent(a, b);
         const int free_column = equation_[column];
         const int prescribed_column = prescribed_index_[column];
         if (free_row >= 0) {

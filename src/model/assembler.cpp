@@ -6,7 +6,8 @@
 
 namespace brb::model {
 
-Assembler::Assembler(const Model& model, const DofMap& map) : model_(model), map_(map) {
+Assembler::Assembler(const Model& model, const DofMap& map, int threads)
+    : model_(model), map_(map), evaluations_(threads) {
   full_force_ = Eigen::VectorXd::Zero(model.dof_count());
   reduced_force_ = Eigen::VectorXd::Zero(map.equation_count());
   tangent_.resize(map.equation_count(), map.equation_count());
@@ -19,34 +20,28 @@ bool Assembler::assemble(std::span<const element::NodeConfiguration> nodes, bool
   force_scale_ = 0.0;
   if (with_tangent)
     triplets_.clear();
+  if (!evaluations_.evaluate(model_, nodes, with_tangent, failure, include))
+    return false;
   const auto elements = model_.elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     evaluated_[e] = include == nullptr || (*include)[e];
     if (!evaluated_[e])
       continue;
-    element::Element& element = *elements[e];
-    const auto element_node_ids = element.nodes();
-    element_nodes_.resize(element_node_ids.size());
-    for (std::size_t a = 0; a < element_node_ids.size(); ++a)
-      element_nodes_[a] = nodes[element_node_ids[a]];
-    if (!element.evaluate(element_nodes_, element_force_, element_tangent_, failure))
-      return false;
-    if (!element_force_.allFinite() || (with_tangent && !element_tangent_.allFinite())) {
-      failure = "element " + std::to_string(e) + " returned a non-finite force or tangent";
-      return false;
-    }
-    force_scale_ = std::max(force_scale_, element_force_.lpNorm<Eigen::Infinity>());
+    const auto element_node_ids = elements[e]->nodes();
+    const Eigen::VectorXd& element_force = evaluations_.force(e);
+    const Eigen::MatrixXd& element_tangent = evaluations_.tangent(e);
+    force_scale_ = std::max(force_scale_, element_force.lpNorm<Eigen::Infinity>());
     const int element_dofs = static_cast<int>(element_node_ids.size()) * kDofPerNode;
     for (int a = 0; a < element_dofs; ++a) {
       const int row = kDofPerNode * element_node_ids[a / kDofPerNode] + a % kDofPerNode;
-      full_force_[row] += element_force_[a];
+      full_force_[row] += element_force[a];
       if (!with_tangent)
         continue;
       const auto row_terms = map_.terms(row);
       if (row_terms.empty())
         continue;
       for (int b = 0; b < element_dofs; ++b) {
-        const double value = element_tangent_(a, b);
+        const double value = element_tangent(a, b);
         if (value == 0.0)
           continue;
         const int column = kDofPerNode * element_node_ids[b / kDofPerNode] + b % kDofPerNode;

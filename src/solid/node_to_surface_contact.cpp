@@ -17,7 +17,7 @@
 //        f_a += -k_T (d . n) [sum_alpha N_a,alpha c_alpha - N_a sum_alpha w_alpha t_alpha
 //                             + g (sum_alpha w_alpha N_a,alpha) n]
 #include "brb/solid/node_to_surface_contact.hpp"
-#include "brb/solid/thread_team.hpp"
+#include "brb/model/thread_team.hpp"
 
 #include "brb/material/parameter_error.hpp"
 
@@ -490,7 +490,7 @@ void NodeToSurfaceContact::contact_of_node(Pass& pass, std::size_t i,
 }
 
 void NodeToSurfaceContact::set_threads(int threads) {
-  team_ = ThreadTeam(threads); // throws std::invalid_argument for threads < 1
+  team_ = model::ThreadTeam(threads); // throws std::invalid_argument for threads < 1
 }
 
 bool NodeToSurfaceContact::add_force(const Eigen::VectorXd& displacement, Eigen::VectorXd& force,

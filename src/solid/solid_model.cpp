@@ -1,5 +1,5 @@
 #include "brb/solid/solid_model.hpp"
-#include "brb/solid/thread_team.hpp"
+#include "brb/model/thread_team.hpp"
 
 #include "brb/material/isotropic_elastic_3d.hpp"
 #include "brb/material/mortar_damage.hpp"
@@ -100,7 +100,7 @@ SolidModel<Law>::SolidModel(HexMesh mesh, const std::function<Law(double)>& law_
 }
 
 template <class Law> void SolidModel<Law>::set_threads(int threads) {
-  team_ = ThreadTeam(threads); // throws std::invalid_argument for threads < 1
+  team_ = model::ThreadTeam(threads); // throws std::invalid_argument for threads < 1
 }
 
 template <class Law>

@@ -296,7 +296,8 @@ std::vector<CheckResult> evaluate_checks(const Specimen& specimen, const RunData
 
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
                         const fs::path& output_directory, analysis::StepObserver observer,
-                        const std::optional<fs::path>& checkpoint, double checkpoint_interval) {
+                        const std::optional<fs::path>& checkpoint, double checkpoint_interval,
+                        int element_threads) {
   const model::BraceSpec spec = refined(prepared.brace, refinement);
   model::BraceModel brace = build_checked(spec, prepared.specimen.brace_file);
   const io::LoadingProtocol protocol =
@@ -306,6 +307,7 @@ RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
   const bool histories = needs_history(prepared.specimen);
   analysis::NewtonSettings settings;
   settings.balance_tolerance = prepared.specimen.balance_tolerance;
+  settings.element_threads = element_threads;
   std::optional<analysis::CyclicCheckpoint> checkpoint_settings;
   if (checkpoint) {
     std::ostringstream key;

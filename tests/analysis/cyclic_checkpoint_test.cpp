@@ -1,6 +1,7 @@
 // Checkpoints of a cyclic test (io/state_archive.hpp, CyclicTest::save_state/load_state,
 // run_cyclic_test's CyclicCheckpoint): a run taken up from a checkpoint must give the results
-// of the run that never stopped, to the bit. The brace is the source's small BRB of case 3
+// of the run that never stopped, to the bit. So must a run whose elements are evaluated on
+// several threads (NewtonSettings::element_threads). The brace is the source's small BRB of case 3
 // (validation/thesis_small_case3: a 10 x 10 mm core in a mortar casing at 0.3 mm clearance,
 // friction, the core buckling in the gap), through its first cycles: its steps need
 // substepping, energy cuts and far-branch cuts, so the taken-up part runs the solver's
@@ -165,6 +166,22 @@ TEST(CyclicCheckpoint, ATakenUpRunGivesTheUninterruptedRunsResultsToTheBit) {
   const CyclicTestResult& whole = reference.result;
   EXPECT_GT(whole.substeps + whole.energy_cuts + whole.far_branch_cuts, fallbacks_before + 20);
   EXPECT_GT(whole.indicators.max_buckling_half_waves, 0);
+}
+
+TEST(ElementThreads, ARunOnThreadsGivesTheOneThreadRunsResultsToTheBit) {
+  const Reference& reference = reference_run();
+  // 3 threads on any machine: more threads than cores still gives every element its own
+  // buffers, and the sums are taken in element order
+  NewtonSettings settings;
+  settings.element_threads = 3;
+  model::BraceModel brace = model::build_brace_model(small_brace());
+  const CyclicTestResult threaded =
+      run_cyclic_test(brace, reference.protocol.deformation, reference.protocol.cycle,
+                      reference.protocol.cycle_amplitude, settings, /*record_history=*/true);
+  expect_same_run(threaded, reference.result);
+  // the run went through the solver's fallbacks (line searches, cuts, pseudo-time)
+  EXPECT_GT(reference.result.work.line_search_assemblies, 0);
+  EXPECT_GT(reference.result.substeps, static_cast<int>(reference.protocol.deformation.size()));
 }
 
 TEST(CyclicCheckpoint, ARunKilledAfterACheckpointIsTakenUpFromTheFile) {

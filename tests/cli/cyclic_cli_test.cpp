@@ -157,7 +157,8 @@ TEST(CyclicCli, HelpNamesEveryOption) {
 
   const CliRun cyclic = run_brb("cyclic --help");
   EXPECT_EQ(cyclic.exit_code, 0) << cyclic.err;
-  for (const char* word : {"--protocol", "--out", "--max-step", "hysteresis.csv", "summary.json"})
+  for (const char* word :
+       {"--protocol", "--out", "--max-step", "--threads", "hysteresis.csv", "summary.json"})
     EXPECT_NE(cyclic.out.find(word), std::string::npos) << word << " not in:\n" << cyclic.out;
 }
 
@@ -768,6 +769,29 @@ TEST(CyclicCli, SolverTolerancesMustBeFractionsOfTheWork) {
       }
     }
   EXPECT_EQ(scratch.entries().size(), 2u);
+}
+
+// --threads: the elements evaluated on threads give the same bytes as one thread; a count
+// below 1 or a word is a usage error and writes nothing.
+TEST(CyclicCli, ThreadsGiveTheSameOutputsAndMustBeAWholeNumberAtLeastOne) {
+  const ScratchDirectory scratch;
+  const auto brace = scratch.write("brace.json", test_brace().dump());
+  const auto protocol = scratch.write("protocol.json", two_cycle_protocol().dump(2));
+  const auto one = scratch.path() / "one";
+  const auto two = scratch.path() / "two";
+  const CliRun single = run_brb(cyclic_arguments(brace, protocol, one));
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  const CliRun threaded = run_brb(cyclic_arguments(brace, protocol, two, "--threads 2"));
+  ASSERT_EQ(threaded.exit_code, 0) << threaded.err;
+  EXPECT_EQ(read_file(two / "hysteresis.csv"), read_file(one / "hysteresis.csv"));
+  const auto bad_output = scratch.path() / "bad";
+  for (const char* value : {"0", "-1", "two"}) {
+    const CliRun run =
+        run_brb(cyclic_arguments(brace, protocol, bad_output, std::string("--threads=") + value));
+    EXPECT_EQ(run.exit_code, 2) << value << ": " << run.err;
+    EXPECT_NE(run.err.find("--threads"), std::string::npos) << run.err;
+  }
+  EXPECT_FALSE(fs::exists(bad_output));
 }
 
 TEST(CyclicCli, MissingArgumentsAndFilesAreUsageOrInputErrors) {

@@ -166,6 +166,30 @@ TEST(ValidateCli, ProgressPrintsALineForEveryStepOfEveryRun) {
       << bad.err;
 }
 
+// --threads: each run's elements evaluated on threads give the same results (checks and
+// hysteresis bytes); the invocation in the report names it; a count below 1 is refused.
+TEST(ValidateCli, ThreadsGiveTheSameResultsAndMustBeAtLeastOne) {
+  const ScratchDirectory scratch;
+  const fs::path folder = make_folder(scratch);
+  const CliRun plain = run_brb("validate " + shell_quoted(folder.string()) + " --only tiny");
+  ASSERT_TRUE(plain.exit_code == 0 || plain.exit_code == 1) << plain.err;
+  const json plain_report = json::parse(read_file(folder / "report.json"));
+  const std::string plain_hysteresis = read_file(folder / "tiny/out/x1/hysteresis.csv");
+
+  const CliRun threaded =
+      run_brb("validate " + shell_quoted(folder.string()) + " --only tiny --threads 2");
+  EXPECT_EQ(threaded.exit_code, plain.exit_code) << threaded.err;
+  const json report = json::parse(read_file(folder / "report.json"));
+  EXPECT_EQ(report.at("specimens").at(0).at("runs").at(0).at("checks"),
+            plain_report.at("specimens").at(0).at("runs").at(0).at("checks"));
+  EXPECT_EQ(read_file(folder / "tiny/out/x1/hysteresis.csv"), plain_hysteresis);
+  EXPECT_NE(read_file(folder / "REPORT.md").find("--threads 2"), std::string::npos);
+
+  const CliRun bad = run_brb("validate " + shell_quoted(folder.string()) + " --threads 0");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--threads"), std::string::npos) << bad.err;
+}
+
 // --checkpoint-dir: each run writes DIR/<id>_x<k>.checkpoint while it runs and removes it
 // once its outputs are written, with the results of a run without checkpoints; a file there
 // that is not that run's checkpoint is refused (exit 2). Taking a run up is brb cyclic's code

@@ -5,6 +5,7 @@
 
 #include "brb/element/element.hpp"
 #include "brb/model/dof_map.hpp"
+#include "brb/model/element_evaluations.hpp"
 #include "brb/model/model.hpp"
 
 #include <Eigen/Core>
@@ -18,7 +19,8 @@ namespace brb::model {
 
 class Assembler {
 public:
-  Assembler(const Model& model, const DofMap& map);
+  /// `threads`: of the element loop (ElementEvaluations; results the same for any count).
+  Assembler(const Model& model, const DofMap& map, int threads = 1);
 
   /// Evaluates the elements (all, or those with include[e] true) at `nodes` (one
   /// configuration per model node). Returns false with the element's reason when one cannot
@@ -44,9 +46,7 @@ private:
   Eigen::VectorXd reduced_force_;
   Eigen::SparseMatrix<double> tangent_;
   std::vector<Eigen::Triplet<double>> triplets_;
-  std::vector<element::NodeConfiguration> element_nodes_;
-  Eigen::VectorXd element_force_;
-  Eigen::MatrixXd element_tangent_;
+  ElementEvaluations evaluations_;
   std::vector<bool> evaluated_;
   double force_scale_ = 0.0;
 };

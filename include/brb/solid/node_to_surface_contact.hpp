@@ -79,10 +79,10 @@
 #pragma once
 
 #include "brb/material/penalty_friction.hpp"
+#include "brb/model/thread_team.hpp"
 #include "brb/solid/bilinear_quad.hpp"
 #include "brb/solid/face_buckets.hpp"
 #include "brb/solid/solid_interaction.hpp"
-#include "brb/solid/thread_team.hpp"
 
 #include <Eigen/Core>
 
@@ -269,7 +269,7 @@ private:
 
   Eigen::Matrix3Xd reference_;
   NodeToSurfaceContactSettings settings_;
-  ThreadTeam team_;
+  model::ThreadTeam team_;
   std::vector<Pass> passes_;
   ContactStatistics statistics_;
 };

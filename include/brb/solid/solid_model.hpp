@@ -15,9 +15,9 @@
 // thread count.
 #pragma once
 
+#include "brb/model/thread_team.hpp"
 #include "brb/solid/hex8.hpp"
 #include "brb/solid/hex_mesh.hpp"
-#include "brb/solid/thread_team.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -134,7 +134,7 @@ private:
   bool evaluate_element(std::size_t e, const Eigen::Matrix3Xd& displacement, bool with_tangent);
 
   HexMesh mesh_;
-  ThreadTeam team_;
+  model::ThreadTeam team_;
   double density_ = 0.0;
   std::vector<Law> laws_;
   std::vector<Hex8Reference> references_;

@@ -106,11 +106,12 @@ struct RunOutcome {
 /// `checkpoint`: a checkpoint file for this run (`brb validate --checkpoint-dir`): taken up if
 /// it exists and was written for the same specimen files, refinement and solver settings,
 /// written at most every `checkpoint_interval` seconds, removed once the outputs are written.
+/// `element_threads`: NewtonSettings::element_threads of the run (the same results for any).
 RunOutcome run_specimen(const PreparedSpecimen& prepared, int refinement,
                         const std::filesystem::path& output_directory,
                         analysis::StepObserver observer = {},
                         const std::optional<std::filesystem::path>& checkpoint = std::nullopt,
-                        double checkpoint_interval = 600.0);
+                        double checkpoint_interval = 600.0, int element_threads = 1);
 
 /// The checks of a finished cyclic test (automatic ones, then the metrics): the part of
 /// run_specimen after the analysis, usable on any result.

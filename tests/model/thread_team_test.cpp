@@ -1,19 +1,20 @@
-// ThreadTeam (the 3D model's loop threads): every item of [0, n) is run exactly once, in the
-// documented contiguous blocks, for any thread and item count, also over many consecutive
-// loops on the same team (the threads are kept between loops); a block's exception reaches
-// the caller after the loop; copies are independent teams.
-#include "brb/solid/thread_team.hpp"
+// ThreadTeam (the loop threads of the 3D model and of the element assembly): every item of [0, n)
+// is run exactly once, in the documented contiguous blocks, for any thread and item count, also
+// over many consecutive loops on the same team (the threads are kept between loops); a block's
+// exception reaches the caller after the loop; copies are independent teams.
+#include "brb/model/thread_team.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
-namespace brb::solid {
+namespace brb::model {
 namespace {
 
 TEST(ThreadTeam, RunsEveryItemOnceInTheDocumentedBlocks) {
@@ -41,28 +42,35 @@ TEST(ThreadTeam, RunsEveryItemOnceInTheDocumentedBlocks) {
   }
 }
 
+// Both ways of waiting: sleeping at once, and polling first (the element loop's teams), where
+// a worker may see the next loop's generation while the caller is still between loops.
 TEST(ThreadTeam, KeepsItsThreadsOverManyLoopsAndUsesThem) {
-  ThreadTeam team(3);
-  std::vector<long> sums(300, 0);
-  std::vector<std::thread::id> runner(3);
-  for (int loop = 0; loop < 2000; ++loop) {
-    team.run(sums.size(), [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
-        sums[i] += static_cast<long>(i);
-      runner[begin / 100] = std::this_thread::get_id();
-    });
+  for (const std::chrono::microseconds spin :
+       {std::chrono::microseconds(0), std::chrono::microseconds(200)}) {
+    ThreadTeam team(3, spin);
+    std::vector<long> sums(300, 0);
+    std::vector<std::thread::id> runner(3);
+    for (int loop = 0; loop < 2000; ++loop) {
+      team.run(sums.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+          sums[i] += static_cast<long>(i);
+        runner[begin / 100] = std::this_thread::get_id();
+      });
+      if (loop % 500 == 0) // a pause longer than the polling: the workers sleep and wake
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    for (std::size_t i = 0; i < sums.size(); ++i)
+      ASSERT_EQ(sums[i], 2000L * static_cast<long>(i)) << "spin " << spin.count() << " us";
+    // the first block runs on the caller, the others on two other threads
+    EXPECT_EQ(runner[0], std::this_thread::get_id());
+    EXPECT_NE(runner[1], std::this_thread::get_id());
+    EXPECT_NE(runner[2], std::this_thread::get_id());
+    EXPECT_NE(runner[1], runner[2]);
   }
-  for (std::size_t i = 0; i < sums.size(); ++i)
-    ASSERT_EQ(sums[i], 2000L * static_cast<long>(i));
-  // the first block runs on the caller, the others on two other threads
-  EXPECT_EQ(runner[0], std::this_thread::get_id());
-  EXPECT_NE(runner[1], std::this_thread::get_id());
-  EXPECT_NE(runner[2], std::this_thread::get_id());
-  EXPECT_NE(runner[1], runner[2]);
 }
 
 TEST(ThreadTeam, RethrowsTheFirstBlocksExceptionAfterTheLoop) {
-  ThreadTeam team(4);
+  ThreadTeam team(4, std::chrono::microseconds(100));
   std::vector<int> visits(40, 0);
   try {
     team.run(visits.size(), [&](std::size_t begin, std::size_t end) {
@@ -101,4 +109,4 @@ TEST(ThreadTeam, CopiesAreIndependentTeamsAndBadCountsAreRefused) {
 }
 
 } // namespace
-} // namespace brb::solid
+} // namespace brb::model
