@@ -42,33 +42,32 @@ bool ElementEvaluations::evaluate(const Model& model,
   results_.resize(count);
   const auto included = [&](std::size_t e) { return include == nullptr || (*include)[e]; };
   if (team_.threads() == 1 || count < 2) {
+    // one thread stops at the first failure: the scan below finds it first
     for (std::size_t e = 0; e < count; ++e) {
       if (!included(e))
         continue;
       evaluate_one(*elements[e], e, nodes, with_tangent);
-      if (!results_[e].failure.empty()) {
-        failure = results_[e].failure;
-        return false;
-      }
+      if (!results_[e].failure.empty())
+        break;
     }
-    return true;
+  } else {
+    // Elements differ widely in cost (a fiber beam against an open contact link), so the
+    // threads take small chunks from a shared counter as they finish, rather than fixed
+    // blocks; which thread evaluates an element does not change its result.
+    constexpr std::size_t kChunk = 4;
+    std::atomic<std::size_t> next_chunk{0};
+    const auto threads = static_cast<std::size_t>(team_.threads());
+    team_.run(threads, [&](std::size_t, std::size_t) {
+      for (std::size_t begin = next_chunk.fetch_add(kChunk); begin < count;
+           begin = next_chunk.fetch_add(kChunk)) {
+        const std::size_t end = std::min(begin + kChunk, count);
+        for (std::size_t e = begin; e < end; ++e) {
+          if (included(e))
+            evaluate_one(*elements[e], e, nodes, with_tangent);
+        }
+      }
+    });
   }
-  // Elements differ widely in cost (a fiber beam against an open contact link), so the
-  // threads take small chunks from a shared counter as they finish, rather than fixed
-  // blocks; which thread evaluates an element does not change its result.
-  constexpr std::size_t kChunk = 4;
-  std::atomic<std::size_t> next_chunk{0};
-  const auto threads = static_cast<std::size_t>(team_.threads());
-  team_.run(threads, [&](std::size_t, std::size_t) {
-    for (std::size_t begin = next_chunk.fetch_add(kChunk); begin < count;
-         begin = next_chunk.fetch_add(kChunk)) {
-      const std::size_t end = std::min(begin + kChunk, count);
-      for (std::size_t e = begin; e < end; ++e) {
-        if (included(e))
-          evaluate_one(*elements[e], e, nodes, with_tangent);
-      }
-    }
-  });
   for (std::size_t e = 0; e < count; ++e) {
     if (included(e) && !results_[e].failure.empty()) {
       failure = results_[e].failure;

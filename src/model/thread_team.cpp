@@ -37,9 +37,10 @@ template <class Done> bool poll_for(std::chrono::microseconds spin, const Done& 
 // The threads beyond the caller, each waiting for the next loop (a generation count, changed
 // under a mutex: every worker runs each loop once, its block or nothing when the loop has
 // fewer blocks than threads), then counting itself done. Waits poll for `spin` first, then
-// sleep on a condition variable; the counts are atomics so that polling needs no lock, and
-// they change under the mutex so that a sleeper cannot miss its wake-up. (For the 3D model's
-// explicit steps a team sleeps at once: polling was measured slower there on the 2-core
+// sleep on a condition variable. The counts are atomics so that polling needs no lock; a
+// sleeper cannot miss its wake-up because the generation changes under the mutex, and the
+// worker that counts the last one done takes the mutex before it wakes the caller. (For the 3D
+// model's explicit steps a team sleeps at once: polling was measured slower there on the 2-core
 // machine, the polling thread taking the core the caller's serial part of the step needs.)
 class ThreadTeam::Pool {
 public:
@@ -99,13 +100,10 @@ private:
     std::uint64_t seen = 0;
     for (;;) {
       const auto woken = [&] { return stopping_.load() || generation_.load() != seen; };
-      std::unique_lock lock(mutex_, std::defer_lock);
-      if (!poll_for(spin_, woken)) {
-        lock.lock();
+      const bool polled = poll_for(spin_, woken);
+      std::unique_lock lock(mutex_); // the task is written under the mutex
+      if (!polled)
         start_.wait(lock, woken);
-      } else {
-        lock.lock(); // the task is written under the mutex
-      }
       if (stopping_.load())
         return;
       seen = generation_.load();
