@@ -264,40 +264,56 @@ void StaticAnalysis::build_tangent_slots() {
 }
 
 bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
+  if (!assemble_forces(with_tangent, failure))
+    return false;
+  if (with_tangent)
+    gather_tangent();
+  return true;
+}
+
+bool StaticAnalysis::assemble_forces(bool check_tangent, std::string& failure) {
   ++work_.assemblies;
   internal_force_.setZero();
   force_scale_ = 0.0;
-  const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
-  const auto prescribed_count = static_cast<Eigen::Index>(kDofPerNode * motion_nodes_.size());
-  // Add into the tangent's value slots where its pattern is known, else collect triplets.
-  const bool into_slots = with_tangent && tangent_slots_valid_ && tangent_slots_match();
-  std::size_t slot = 0;
-  if (with_tangent) {
-    triplets_.clear();
-    if (into_slots)
-      std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0);
-    control_column_ = Eigen::VectorXd::Zero(free_count);
-    if (prescribed_count > 0) {
-      tangent_free_prescribed_ = Eigen::MatrixXd::Zero(free_count, prescribed_count);
-      tangent_prescribed_free_ = Eigen::MatrixXd::Zero(prescribed_count, free_count);
-      tangent_prescribed_prescribed_ = Eigen::MatrixXd::Zero(prescribed_count, prescribed_count);
-    }
-  }
-  if (!evaluations_.evaluate(model_, trial_, with_tangent, failure))
+  if (!evaluations_.evaluate(model_, trial_, check_tangent, failure))
     return false;
   const auto elements = model_.elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const auto nodes = elements[e]->nodes();
     const Eigen::VectorXd& element_force = evaluations_.force(e);
-    const Eigen::MatrixXd& element_tangent = evaluations_.tangent(e);
     force_scale_ = std::max(force_scale_, element_force.lpNorm<Eigen::Infinity>());
+    const int element_dofs = static_cast<int>(nodes.size()) * kDofPerNode;
+    for (int a = 0; a < element_dofs; ++a)
+      internal_force_[kDofPerNode * nodes[a / kDofPerNode] + a % kDofPerNode] += element_force[a];
+  }
+  return true;
+}
+
+void StaticAnalysis::gather_tangent() {
+  const auto free_count = static_cast<Eigen::Index>(free_dofs_.size());
+  const auto prescribed_count = static_cast<Eigen::Index>(kDofPerNode * motion_nodes_.size());
+  // Add into the tangent's value slots where its pattern is known, else collect triplets.
+  const bool into_slots = tangent_slots_valid_ && tangent_slots_match();
+  std::size_t slot = 0;
+  triplets_.clear();
+  if (into_slots)
+    std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0);
+  control_column_ = Eigen::VectorXd::Zero(free_count);
+  if (prescribed_count > 0) {
+    tangent_free_prescribed_ = Eigen::MatrixXd::Zero(free_count, prescribed_count);
+    tangent_prescribed_free_ = Eigen::MatrixXd::Zero(prescribed_count, free_count);
+    tangent_prescribed_prescribed_ = Eigen::MatrixXd::Zero(prescribed_count, prescribed_count);
+  }
+  const auto elements = model_.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto nodes = elements[e]->nodes();
+    const Eigen::MatrixXd& element_tangent = evaluations_.tangent(e);
     const int element_dofs = static_cast<int>(nodes.size()) * kDofPerNode;
     for (int a = 0; a < element_dofs; ++a) {
       const int row = kDofPerNode * nodes[a / kDofPerNode] + a % kDofPerNode;
-      internal_force_[row] += element_force[a];
       const int free_row = equation_[row];
       const int prescribed_row = prescribed_index_[row];
-      if (!with_tangent || (free_row < 0 && prescribed_row < 0))
+      if (free_row < 0 && prescribed_row < 0)
         continue;
       for (int b = 0; b < element_dofs; ++b) {
         const int column = kDofPerNode * nodes[b / kDofPerNode] + b % kDofPerNode;
@@ -323,13 +339,11 @@ bool StaticAnalysis::assemble(bool with_tangent, std::string& failure) {
       }
     }
   }
-  if (with_tangent && !into_slots) {
-    const auto size = static_cast<Eigen::Index>(free_dofs_.size());
-    tangent_.resize(size, size);
+  if (!into_slots) {
+    tangent_.resize(free_count, free_count);
     tangent_.setFromTriplets(triplets_.begin(), triplets_.end());
     build_tangent_slots();
   }
-  return true;
 }
 
 Eigen::VectorXd StaticAnalysis::free_residual(double control) const {
@@ -526,12 +540,15 @@ StaticAnalysis::newton_iterations(double control, const Eigen::SparseMatrix<doub
     const std::vector<NodeConfiguration> start = trial_;
     const Eigen::VectorXd start_moved = moved_;
     const double start_norm = residual_norm;
+    // A trial point's forces decide it; its tangent is gathered only if it is accepted (about
+    // two trials in three are not), from the same evaluation (its finiteness is checked at
+    // the trial, as before, so the same trials are accepted).
     const auto take_step = [&](double step, std::string& failure) {
       trial_ = start;
       apply_free_increment(increment, step);
       moved_ = start_moved + step * increment;
       ++work_.line_search_assemblies;
-      return assemble(true, failure);
+      return assemble_forces(true, failure);
     };
     double full_slope = std::numeric_limits<double>::quiet_NaN();
     double step = 1.0;
@@ -557,6 +574,7 @@ StaticAnalysis::newton_iterations(double control, const Eigen::SparseMatrix<doub
                  take_step(step, failure);
       }
       if (accept) {
+        gather_tangent();
         assembled = true;
         break;
       }

@@ -365,6 +365,14 @@ private:
   bool kinematic_control() const { return displacement_control_ || !motion_nodes_.empty(); }
   /// Assembles internal forces (all DOF) and the free-free tangent at the trial state.
   bool assemble(bool with_tangent, std::string& failure);
+  /// The first half of assemble(): evaluates the elements at the trial state and sums their
+  /// forces (internal_force_, force_scale_). With `check_tangent` an element whose tangent
+  /// is not finite fails the evaluation, as in assemble(true), so gather_tangent() can
+  /// follow later without evaluating again.
+  bool assemble_forces(bool check_tangent, std::string& failure);
+  /// The second half: the tangent blocks (free x free, control column, prescribed blocks)
+  /// from the elements' tangents of the last evaluation.
+  void gather_tangent();
   /// Whether the elements still have the nodes the tangent's value slots were built for.
   bool tangent_slots_match() const;
   /// The value slot of every triplets_ entry in the compressed tangent_.
