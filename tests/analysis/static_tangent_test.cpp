@@ -31,8 +31,9 @@ TEST(StaticTangent, ConvergedStepHoldsTheTangentOfItsOwnStateNotOfAnEarlierItera
   };
   Eigen::MatrixXd previous;
   int steps_with_iterations = 0;
-  // Down in 5 mm steps, before the truss's limit point (it snaps near 300 mm of driver
-  // travel): each step converges by Newton on the curved (co-rotational) path.
+  // Down in 5 mm steps, well before the truss's limit point (measured: the 45th such step,
+  // 225 mm of driver travel, is the first to snap): each step converges by Newton on the
+  // curved (co-rotational) path.
   for (int step = 1; step <= 8; ++step) {
     analysis.set_motion_target(driver_at(1050.0 - 5.0 * step));
     const StepReport report = analysis.step_to(1.0);
